@@ -1,0 +1,51 @@
+#include "demo_report.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "shape/topology.hpp"
+
+namespace s4d::cli {
+
+double coverage(const Image& image) {
+  if (image.width == 0 || image.height == 0) return 0;
+  const std::uint8_t* bg = image.pixel(0, 0);
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 12) ++n;
+    }
+  return static_cast<double>(n) / (static_cast<double>(image.width) * image.height);
+}
+
+std::string describe_scene(const Scene& scene, const Image& image, double render_ms) {
+  std::ostringstream out;
+  for (const auto& obj : scene.objects) {
+    out << "  " << obj.name << ": ";
+    std::visit(
+        [&](const auto& s) {
+          using T = std::decay_t<decltype(s)>;
+          if constexpr (requires { s.triangles; }) {
+            const auto t = summarize_topology(s);
+            out << "surface in R^" << T::kDim << ", " << t.vertices << " vertices, " << t.faces
+                << " triangles, " << t.components << " component(s), Euler characteristic "
+                << t.euler_characteristic << ", " << (t.closed ? "closed" : "with boundary") << ", "
+                << (t.manifold ? "manifold" : "NOT manifold");
+          } else {
+            out << "curve in R^" << T::kDim << ", " << s.components.size() << " component(s), "
+                << s.point_count() << " points, length " << s.length();
+          }
+        },
+        obj.shape);
+    out << "\n";
+  }
+  char line[160];
+  std::snprintf(line, sizeof line, "  picture: %dx%d, %.1f%% covered, rendered in %.0f ms\n",
+                image.width, image.height, 100.0 * coverage(image), render_ms);
+  out << line;
+  return out.str();
+}
+
+}  // namespace s4d::cli

@@ -1,0 +1,44 @@
+// shadow4d: with no sub-command opens the GUI (optionally on a file); sub-commands run headless.
+#include <spdlog/spdlog.h>
+
+#include <cstdlib>
+#include <iostream>
+
+#include "command.hpp"
+#include "core/error.hpp"
+#include "gui_launch.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"shadow4d - touch and edit higher-dimensional objects through their shadows.\n"
+               "With no sub-command, opens the app window (on a display)."};
+  app.require_subcommand(0, 1);
+  std::string open_spec;
+  app.add_option("file", open_spec,
+                 "scene (.json), mesh (.off/.4off), curve (.vect/.txt) or generator call to open");
+  int frames = 0;
+  std::string window_shot;
+  app.add_option("--frames", frames, "GUI: quit after this many frames (for scripted screenshots)")
+      ->group("GUI scripting")->check(CLI::NonNegativeNumber);
+  app.add_option("--window-shot", window_shot, "GUI: save the window, panels included, at the last frame")
+      ->group("GUI scripting");
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "log more");
+  s4d::cli::add_registered_commands(app);
+
+  try {
+    app.parse(argc, argv);
+    spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+    if (app.get_subcommands().empty()) return s4d::cli::launch_gui(open_spec, frames, window_shot);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const s4d::cli::ExitStatus& e) {
+    return e.code;
+  } catch (const s4d::Error& e) {
+    std::cerr << "shadow4d: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "shadow4d: unexpected error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

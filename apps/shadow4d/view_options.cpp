@@ -1,0 +1,59 @@
+#include "view_options.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.hpp"
+
+namespace s4d::cli {
+
+void ViewOptions::add_to(CLI::App& app, bool with_size) {
+  if (with_size) app.add_option("--size", size, "image size WxH")->capture_default_str();
+  app.add_option("--rotate", rotate,
+                 "rotations of the 4D view, degrees, in order, e.g. xw=30,yz=10 (planes xy xz xw yz yw zw)");
+  app.add_option("--orbit", orbit, "camera yaw,pitch in degrees, e.g. 30,20");
+  app.add_option("--colour-map", colour_map, "depth colour map: coolwarm, rainbow or grey");
+  app.add_flag("--no-depth-colour", no_depth_colour, "plain colour instead of depth colouring");
+  app.add_flag("--wireframe", wireframe, "draw triangle edges");
+  app.add_flag("--shadow", shadow, "flat-shaded shadow drawing (no lighting)");
+  app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
+}
+
+std::pair<int, int> ViewOptions::parsed_size() const {
+  int w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 8192 ||
+      h > 8192)
+    throw Error("--size '" + size + "' should be WxH with 16..8192 pixels each, e.g. 800x600");
+  return {w, h};
+}
+
+void ViewOptions::apply(Scene& scene) const {
+  apply_rotations(scene.frame, parse_rotation_list(rotate, 4));
+  if (!orbit.empty()) {
+    double yaw = 0, pitch = 0;
+    char extra = 0;
+    if (std::sscanf(orbit.c_str(), "%lf,%lf%c", &yaw, &pitch, &extra) != 2 || !std::isfinite(yaw) ||
+        !std::isfinite(pitch))
+      throw Error("--orbit '" + orbit + "' should be yaw,pitch in degrees, e.g. 30,20");
+    constexpr double kDeg = 3.14159265358979323846 / 180.0;
+    const Eigen::Quaterniond turn = Eigen::AngleAxisd(pitch * kDeg, Eigen::Vector3d::UnitX()) *
+                                    Eigen::AngleAxisd(yaw * kDeg, Eigen::Vector3d::UnitY());
+    scene.view.trackball = (turn * scene.view.trackball).normalized();
+  }
+  if (!colour_map.empty()) {
+    const auto map = parse_colour_map(colour_map);
+    if (!map) throw Error("--colour-map '" + colour_map + "': use coolwarm, rainbow or grey");
+    scene.view.colour_map = *map;
+  }
+  if (no_depth_colour) scene.view.depth_colour = false;
+  if (wireframe) scene.view.wireframe = true;
+  if (shadow) scene.view.shadow = true;
+  if (tube_radius) {
+    if (!std::isfinite(*tube_radius) || *tube_radius <= 0 || *tube_radius > 100)
+      throw Error("--tube-radius must be a positive number (scene units)");
+    scene.view.tube_radius = *tube_radius;
+  }
+}
+
+}  // namespace s4d::cli

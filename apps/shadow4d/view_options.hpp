@@ -1,0 +1,30 @@
+// Command-line options shared by commands that render or look at a scene from a viewpoint
+// (render, demo, check): size, 4D rotation, camera orbit and drawing style.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "io/scene.hpp"
+
+namespace s4d::cli {
+
+struct ViewOptions {
+  std::string size = "1024x768";
+  std::string rotate;      // 4D (or 3D) plane rotations, "xw=30,yz=10", degrees, applied in order
+  std::string orbit;       // camera yaw,pitch in degrees
+  std::string colour_map;  // coolwarm | rainbow | grey
+  bool no_depth_colour = false;
+  bool wireframe = false;
+  bool shadow = false;
+  std::optional<double> tube_radius;
+
+  // Adds --size only when `with_size`.
+  void add_to(CLI::App& app, bool with_size = true);
+  // Applies the options on top of the scene's own settings. Throws s4d::Error on bad values.
+  void apply(Scene& scene) const;
+  // Parses "WxH"; throws s4d::Error unless 16 <= W, H <= 8192.
+  std::pair<int, int> parsed_size() const;
+};
+
+}  // namespace s4d::cli

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages shadow4d needs that are not yet installed (as root or via sudo).
+# Usage: scripts/install-deps.sh [build|test]   (test adds what only the test suite needs)
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libstb-dev
+  libglfw3-dev libimgui-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  regina-normal-dev libgmp-dev libxml2-dev
+  libgtest-dev libbenchmark-dev
+)
+if [[ "${1:-build}" == test ]]; then
+  packages+=(xvfb xauth libfcl-dev libbullet-dev)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,142 @@
+// The window loop: events -> mouse mapping -> panels -> scene drawing -> ImGui -> swap.
+#include "app/gui_app.hpp"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "app/panels.hpp"
+#include "io/image.hpp"
+#include "render/renderer.hpp"
+
+namespace s4d {
+
+namespace {
+
+void glfw_error(int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); }
+
+// Mouse drags that ImGui does not want go to the view: plain = trackball, shift = xw/yw,
+// ctrl = zw; the wheel zooms.
+void handle_mouse(GLFWwindow* window, GuiModel& model, double& last_x, double& last_y) {
+  double x = 0, y = 0;
+  glfwGetCursorPos(window, &x, &y);
+  const double dx = x - last_x, dy = y - last_y;
+  last_x = x;
+  last_y = y;
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantCaptureMouse) return;
+  if (io.MouseWheel != 0) model.view.scroll(io.MouseWheel);
+  if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) return;
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  const DragMode mode = io.KeyShift  ? DragMode::kRotateW
+                        : io.KeyCtrl ? DragMode::kRotateZW
+                                     : DragMode::kTrackball;
+  model.view.drag(mode, dx, dy, h);
+}
+
+void handle_keys(GuiModel& model) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) model.quit = true;
+  if (ImGui::IsKeyPressed(GLFW_KEY_F12)) model.want_screenshot = true;
+}
+
+void save_shot(const Image& image, const std::string& path, GuiModel& model) {
+  try {
+    write_png(image, path);
+    model.status = "saved " + path;
+  } catch (const std::exception& e) {
+    model.error = e.what();
+  }
+}
+
+}  // namespace
+
+int run_gui_app(const GuiOptions& options) {
+  glfwSetErrorCallback(glfw_error);
+  if (!glfwInit()) {
+    std::cerr << "shadow4d: cannot open a window (glfwInit failed); try `shadow4d demo`\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "shadow4d", nullptr, nullptr);
+  if (!window) {
+    std::cerr << "shadow4d: cannot create an OpenGL 3.3 window; try `shadow4d demo`\n";
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int exit_code = 0;
+  {
+    Renderer renderer;
+    Panels panels;
+    GuiModel model;
+    Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
+    if (!model.error.empty() && !options.open_spec.empty()) {
+      std::cerr << "shadow4d: " << model.error << "\n";
+      exit_code = 1;
+    }
+    double last_x = 0, last_y = 0;
+    glfwGetCursorPos(window, &last_x, &last_y);
+    for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
+      glfwPollEvents();
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      handle_mouse(window, model, last_x, last_y);
+      handle_keys(model);
+      panels.draw(model, ImGui::GetIO().Framerate);
+      ImGui::Render();
+
+      int fw = 0, fh = 0;
+      glfwGetFramebufferSize(window, &fw, &fh);
+      model.view.apply_to(model.scene);
+      if (fw > 0 && fh > 0) {
+        renderer.draw(model.scene, fw, fh);
+        if (model.want_screenshot) {  // the picture without the panels
+          model.want_screenshot = false;
+          save_shot(renderer.read_pixels(fw, fh), model.screenshot_path, model);
+        }
+      }
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      const bool last = options.frames > 0 && frame >= options.frames;
+      if (last && !options.window_shot.empty()) {
+        try {
+          write_png(renderer.read_pixels(fw, fh), options.window_shot);
+          std::cout << options.window_shot << "\n";
+        } catch (const std::exception& e) {
+          std::cerr << "shadow4d: " << e.what() << "\n";
+          exit_code = 1;
+        }
+      }
+      glfwSwapBuffers(window);
+      if (last) break;
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return exit_code;
+}
+
+}  // namespace s4d

@@ -1,0 +1,22 @@
+// The shadow4d window: GLFW + OpenGL 3.3 + Dear ImGui around the Renderer.
+#pragma once
+#include <string>
+
+namespace s4d {
+
+struct GuiOptions {
+  std::string open_spec;         // scene, mesh, curve or generator call to open at start
+  int frames = 0;                // > 0: quit after this many frames (smoke tests, scripted shots)
+  std::string window_shot;       // when set, the last frame (panels included) is saved here
+  int width = 1280, height = 800;
+};
+
+// Returns the process exit code; never throws (errors are shown in the window or printed).
+int run_gui_app(const GuiOptions& options);
+inline int run_gui_app(const std::string& open_spec) {
+  GuiOptions options;
+  options.open_spec = open_spec;
+  return run_gui_app(options);
+}
+
+}  // namespace s4d

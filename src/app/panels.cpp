@@ -1,0 +1,243 @@
+// [SECTION] Menu bar   [SECTION] View panel   [SECTION] Scene panel   [SECTION] Generator dialog
+// [SECTION] Dialogs (open, save, screenshot, errors)
+#include "app/panels.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "shape/topology.hpp"
+
+namespace s4d {
+
+namespace {
+
+const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff", ".vect",
+                                               ".4vect", ".txt", ".xyz", ".curve"};
+
+std::string describe(const SceneObject& obj) {
+  return std::visit(
+      [](const auto& s) -> std::string {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (requires { s.triangles; }) {
+          const auto t = summarize_topology(s);
+          return "surface in R^" + std::to_string(T::kDim) + ": " + std::to_string(t.vertices) +
+                 " vertices, " + std::to_string(t.faces) + " triangles, chi = " +
+                 std::to_string(t.euler_characteristic) + (t.closed ? ", closed" : ", with boundary") +
+                 (t.manifold ? "" : ", NOT manifold");
+        } else {
+          return "curve in R^" + std::to_string(T::kDim) + ": " + std::to_string(s.components.size()) +
+                 " component(s), " + std::to_string(s.point_count()) + " points";
+        }
+      },
+      obj.shape);
+}
+
+// Horizontal colour bar: far (blue) on the left, near (red) on the right.
+void legend(ColourMap map) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  const float w = ImGui::GetContentRegionAvail().x, h = 14;
+  constexpr int kSteps = 32;
+  for (int i = 0; i < kSteps; ++i) {
+    const Vec3f c = map_colour(map, (i + 0.5) / kSteps);
+    dl->AddRectFilled(ImVec2(p.x + w * i / kSteps, p.y), ImVec2(p.x + w * (i + 1) / kSteps, p.y + h),
+                      ImGui::ColorConvertFloat4ToU32(ImVec4(c.x(), c.y(), c.z(), 1)));
+  }
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::TextUnformatted("far (w -)");
+  ImGui::SameLine(w - ImGui::CalcTextSize("near (w +)").x);
+  ImGui::TextUnformatted("near (w +)");
+}
+
+}  // namespace
+
+Panels::Panels()
+    : open_browser_("Open scene, mesh or curve", kOpenExtensions, false),
+      save_browser_("Save scene", {".json"}, true),
+      shot_browser_("Save screenshot", {".png"}, true) {}
+
+void Panels::open(GuiModel& model, const std::string& spec) {
+  try {
+    Scene scene = load_scene_or_object(spec);
+    model.scene = std::move(scene);
+    model.view.reset(model.scene);
+    model.status = "opened " + spec;
+  } catch (const std::exception& e) {
+    model.error = e.what();
+  }
+}
+
+void Panels::draw(GuiModel& model, float fps) {
+  menu_bar(model);
+  view_panel(model, fps);
+  scene_panel(model);
+  generator_dialog(model);
+  dialogs(model);
+}
+
+// [SECTION] Menu bar
+void Panels::menu_bar(GuiModel& model) {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
+    if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
+    if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) model.quit = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Create")) {
+    for (const auto& g : generator_catalogue()) {
+      const std::string label = g.name + (g.surface ? "  (surface, R^" : "  (curve, R^") +
+                                std::to_string(g.dim) + ")";
+      if (ImGui::MenuItem(label.c_str())) {
+        generator_ = g.name;
+        generator_params_.clear();
+        for (const auto& p : g.params) generator_params_[p.name] = p.default_value;
+        generator_dialog_open_ = true;
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", g.description.c_str());
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::TextDisabled("|  %s", model.status.c_str());
+  ImGui::EndMainMenuBar();
+}
+
+// [SECTION] View panel
+void Panels::view_panel(GuiModel& model, float fps) {
+  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("View");
+  ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
+  ImGui::Separator();
+  ImGui::TextUnformatted("4D rotation (degrees)");
+  auto& angles = model.view.plane_angles();
+  const auto planes = all_planes(4);
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    ImGui::SliderFloat(plane_name(planes[i]).c_str(), &angles[i], -180.0f, 180.0f, "%.0f");
+  if (ImGui::Button("Reset 4D rotation")) angles.fill(0.0f);
+  ImGui::SameLine();
+  if (ImGui::Button("Reset view")) model.view.reset(model.scene);
+  ImGui::TextDisabled("drag: turn  shift-drag: xw/yw  ctrl-drag: zw  wheel: zoom");
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Drawing");
+  ViewSettings& v = model.scene.view;
+  ImGui::Checkbox("4D depth colour", &v.depth_colour);
+  if (v.depth_colour) {
+    int map = static_cast<int>(v.colour_map);
+    ImGui::Combo("colour map", &map, "coolwarm\0rainbow\0grey\0");
+    v.colour_map = static_cast<ColourMap>(map);
+    legend(v.colour_map);
+  }
+  ImGui::Checkbox("wireframe", &v.wireframe);
+  ImGui::SameLine();
+  ImGui::Checkbox("flat shadow", &v.shadow);
+  float radius = static_cast<float>(v.tube_radius);
+  if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
+    v.tube_radius = radius;
+  ImGui::End();
+}
+
+// [SECTION] Scene panel
+void Panels::scene_panel(GuiModel& model) {
+  ImGui::SetNextWindowPos(ImVec2(10, 470), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 200), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Scene");
+  if (model.scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
+  int remove = -1;
+  for (std::size_t i = 0; i < model.scene.objects.size(); ++i) {
+    const auto& obj = model.scene.objects[i];
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::SmallButton("x")) remove = static_cast<int>(i);
+    ImGui::SameLine();
+    ImGui::TextUnformatted(obj.name.c_str());
+    ImGui::TextDisabled("  %s", describe(obj).c_str());
+    ImGui::PopID();
+  }
+  if (remove >= 0) model.scene.objects.erase(model.scene.objects.begin() + remove);
+  ImGui::End();
+}
+
+// [SECTION] Generator dialog
+void Panels::generator_dialog(GuiModel& model) {
+  if (!generator_dialog_open_) return;
+  const GeneratorInfo* info = find_generator(generator_);
+  if (!info) {
+    generator_dialog_open_ = false;
+    return;
+  }
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Appearing);
+  ImGui::Begin(("Create " + info->name).c_str(), &generator_dialog_open_);
+  ImGui::TextWrapped("%s", info->description.c_str());
+  for (const auto& p : info->params) {
+    double& value = generator_params_[p.name];
+    if (p.integer) {
+      int i = static_cast<int>(std::lround(value));
+      ImGui::DragInt(p.name.c_str(), &i, 0.25f, static_cast<int>(p.min), static_cast<int>(p.max));
+      value = i;
+    } else {
+      float f = static_cast<float>(value);
+      ImGui::DragFloat(p.name.c_str(), &f, static_cast<float>((p.max - p.min) / 500.0),
+                       static_cast<float>(p.min), static_cast<float>(p.max), "%.3f");
+      value = f;
+    }
+    if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
+  }
+  const bool replace = ImGui::Button("Replace scene");
+  ImGui::SameLine();
+  const bool add = ImGui::Button("Add to scene");
+  if (replace || add) {
+    try {
+      SceneObject obj;
+      obj.generator = GeneratorCall{info->name, generator_params_};
+      obj.shape = generate(info->name, generator_params_);
+      obj.name = info->name + "-" + std::to_string(++model.created);
+      if (replace) {
+        model.scene.objects.clear();
+        model.scene.frame = Frame<4>();
+        model.view.reset(model.scene);
+      }
+      model.scene.objects.push_back(std::move(obj));
+      model.status = "created " + info->name;
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  ImGui::End();
+}
+
+// [SECTION] Dialogs (open, save, screenshot, errors)
+void Panels::dialogs(GuiModel& model) {
+  if (auto p = open_browser_.draw()) open(model, p->string());
+  if (auto p = save_browser_.draw()) {
+    try {
+      Scene to_save = model.scene;
+      model.view.apply_to(to_save);
+      auto path = *p;
+      if (path.extension() != ".json") path += ".json";
+      save_scene(to_save, path);
+      model.status = "saved " + path.string();
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  if (auto p = shot_browser_.draw()) {
+    model.screenshot_path = p->extension() == ".png" ? p->string() : p->string() + ".png";
+    model.want_screenshot = true;
+  }
+  if (!model.error.empty()) ImGui::OpenPopup("Error");
+  if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextWrapped("%s", model.error.c_str());
+    if (ImGui::Button("OK")) {
+      model.error.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace s4d

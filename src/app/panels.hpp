@@ -1,0 +1,49 @@
+// The ImGui panels of the window: menu bar, view (4D rotation, colour, style), scene list,
+// generator dialog, legend, status line. They edit a GuiModel; the window loop acts on requests.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "app/file_browser.hpp"
+#include "app/view_state.hpp"
+#include "io/scene.hpp"
+
+namespace s4d {
+
+struct GuiModel {
+  Scene scene;                 // what is shown (its frame/view are rewritten from `view` each frame)
+  ViewState view;
+  std::string status;          // last message for the status line
+  std::string error;           // shown in a modal until dismissed
+  bool quit = false;
+  bool want_screenshot = false;
+  std::string screenshot_path = "shadow4d-screenshot.png";
+  int created = 0;             // counter for unique object names
+};
+
+class Panels {
+ public:
+  Panels();
+  // Draws every panel for this frame; `fps` is shown in the view panel.
+  void draw(GuiModel& model, float fps);
+
+  // Replaces the scene with what `spec` names (file or generator call); errors go to model.error
+  // and leave the current scene untouched.
+  static void open(GuiModel& model, const std::string& spec);
+
+ private:
+  void menu_bar(GuiModel& model);
+  void view_panel(GuiModel& model, float fps);
+  void scene_panel(GuiModel& model);
+  void generator_dialog(GuiModel& model);
+  void dialogs(GuiModel& model);
+
+  FileBrowser open_browser_;
+  FileBrowser save_browser_;
+  FileBrowser shot_browser_;
+  std::string generator_;      // generator whose dialog is open
+  Params generator_params_;
+  bool generator_dialog_open_ = false;
+};
+
+}  // namespace s4d

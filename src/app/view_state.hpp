@@ -1,0 +1,41 @@
+// ViewState: what the mouse and the view panel control — the 3D trackball, the zoom, and the six
+// 4D rotation angles (xy xz xw yz yw zw) applied on top of the scene's own frame.
+#pragma once
+#include <array>
+
+#include "io/scene.hpp"
+
+namespace s4d {
+
+enum class DragMode {
+  kTrackball,  // plain drag: turn the 3D view
+  kRotateW,    // shift-drag: horizontal turns xw, vertical turns yw
+  kRotateZW,   // ctrl-drag: horizontal turns zw
+};
+
+class ViewState {
+ public:
+  // Starts from the scene's frame and view; slider angles start at zero.
+  void reset(const Scene& scene);
+
+  // A mouse drag of (dx, dy) pixels in a viewport of the given height.
+  void drag(DragMode mode, double dx, double dy, double viewport_height);
+  // Mouse wheel: positive moves closer.
+  void scroll(double steps);
+
+  // Degrees, in the order of all_planes(4): xy, xz, xw, yz, yw, zw. Kept within [-180, 180].
+  std::array<float, 6>& plane_angles() { return angles_; }
+  const std::array<float, 6>& plane_angles() const { return angles_; }
+
+  // Writes the composed 4D frame, trackball and zoom into the scene for drawing.
+  void apply_to(Scene& scene) const;
+  Frame<4> composed_frame() const;
+
+ private:
+  Frame<4> base_frame_;
+  std::array<float, 6> angles_{};
+  Eigen::Quaterniond trackball_ = Eigen::Quaterniond::Identity();
+  double zoom_ = 1;
+};
+
+}  // namespace s4d

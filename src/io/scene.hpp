@@ -1,0 +1,77 @@
+// Scene: what the app shows and simulates, and its versioned JSON file format.
+// A scene file lists objects (a generator with parameters, or a mesh/curve file path relative to
+// the scene file), the 4D frame, the view, and the physics parameters.
+#pragma once
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/colour_map.hpp"
+#include "core/frame.hpp"
+#include "shape/generators.hpp"
+#include "shape/shape.hpp"
+
+namespace s4d {
+
+inline constexpr int kSceneVersion = 1;
+
+struct SceneObject {
+  std::string name;                          // shown in the UI; unique within a scene
+  std::optional<GeneratorCall> generator;    // how it was made, when generated
+  std::string source_path;                   // the file it was read from, when loaded
+  Shape shape;                               // the geometry itself (built or loaded)
+  std::optional<Vec3f> colour;               // fixed colour when depth colouring is off
+  // Translation in R^4 applied once when the object is built or loaded.
+  Vec4 offset = Vec4::Zero();
+};
+
+struct ViewSettings {
+  Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();  // 3D camera orientation
+  double distance = 0;         // camera distance; 0 = fit the scene's bounding sphere
+  double zoom = 1;             // multiplies the fitted view: > 1 moves closer (GUI wheel)
+  double fov_deg = 35;         // vertical field of view
+  bool depth_colour = true;    // 4D depth (w) colour for R^4 objects, view depth for R^3 ones
+  ColourMap colour_map = ColourMap::kCoolWarm;
+  bool wireframe = false;      // draw triangle edges over the surface
+  bool shadow = false;         // flat-shaded shadow drawing (no lighting)
+  double tube_radius = 0.03;   // curve tube radius, in scene units
+  Vec3f background{0.08f, 0.09f, 0.11f};
+};
+
+// Physics parameters stored with a scene (used by the physics layer; validated on load).
+struct PhysicsSettings {
+  double time_step = 1e-3;     // s; the haptic tick
+  double thickness = 0.02;     // δ, collision thickness, scene units
+  Vec4 gravity = Vec4::Zero(); // m/s², any direction of R^4
+  double mass = 1e-3;          // kg per vertex
+  double stiffness = 50;       // N/m, structural springs (shear and bending scale from it)
+  double beta = 0;             // exponent of the generalised Hooke law (paper Eq. 1)
+  double damping = 0.02;       // N·s/m
+  double friction = 0.3;       // Coulomb coefficient between touching surfaces
+  std::string integrator = "symplectic-euler";
+};
+
+struct Scene {
+  std::vector<SceneObject> objects;
+  Frame<4> frame;              // the 4D view rotation; R^3 objects sit at w = 0
+  ViewSettings view;
+  PhysicsSettings physics;
+};
+
+// Reads a scene file. Mesh paths are resolved relative to the scene file. Throws ParseError
+// naming the file (and line, for JSON syntax errors) on anything malformed.
+Scene load_scene(const std::filesystem::path& path);
+// Parses scene JSON text; `origin` names it in errors and is the base for relative paths.
+Scene parse_scene(const std::string& text, const std::filesystem::path& origin);
+// Writes a scene. Generated objects are stored by generator call; loaded objects by path;
+// objects with neither (edited geometry) are written as meshes beside the scene file.
+void save_scene(const Scene& scene, const std::filesystem::path& path);
+
+// Loads any object file by extension: .off/.4off (surfaces), .vect/.txt/.xyz/.curve (curves),
+// or a generator call such as "spun-trefoil:n=48". Throws Error/ParseError.
+SceneObject load_object(const std::string& spec);
+// Loads a scene file (.json) or wraps a single object (see load_object) in a default scene.
+Scene load_scene_or_object(const std::string& spec);
+
+}  // namespace s4d

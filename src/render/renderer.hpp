@@ -1,0 +1,39 @@
+// Renderer: draws a Scene with OpenGL 3.3 core into the current framebuffer. R^4 objects are
+// projected by the scene's Frame<4> to R^3 and coloured by 4D depth; R^3 objects are drawn as they
+// are, coloured by view depth. Curves become lit tubes; surfaces are lit two-sided.
+#pragma once
+#include <memory>
+
+#include "core/vec.hpp"
+#include "io/image.hpp"
+#include "io/scene.hpp"
+#include "render/camera.hpp"
+
+namespace s4d {
+
+// Needs a current OpenGL 3.3 core context for its whole life (GLFW window or OffscreenContext).
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Draws into the bound framebuffer, viewport (0, 0, width, height).
+  void draw(const Scene& scene, int width, int height);
+  // Reads back the bound framebuffer as an image (top row first).
+  Image read_pixels(int width, int height) const;
+  // The camera of the last draw (identity-looking default before the first): lets the app map
+  // the mouse to shadow space with exactly the matrices that were drawn.
+  const Camera& camera() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Renders a scene without a display: EGL surfaceless (Mesa llvmpipe works without a GPU), into a
+// multisampled framebuffer object. Throws s4d::Error if no OpenGL 3.3 context can be made.
+Image render_offscreen(const Scene& scene, int width, int height);
+
+}  // namespace s4d
