@@ -1,0 +1,69 @@
+// Camera matrices and the auto-fit distance (see camera.hpp).
+#include "render/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace s4d {
+
+namespace {
+// The fitted sphere leaves this fraction of slack so silhouettes do not touch the image border.
+constexpr double kFitMargin = 1.04;
+}  // namespace
+
+Vec3 Camera::eye() const { return target + orientation.normalized() * Vec3(0, 0, distance); }
+
+Mat4 Camera::view() const {
+  const Eigen::Matrix3d r = orientation.normalized().toRotationMatrix();
+  Mat4 v = Mat4::Identity();
+  v.topLeftCorner<3, 3>() = r.transpose();
+  v.topRightCorner<3, 1>() = -r.transpose() * eye();
+  return v;
+}
+
+Mat4 Camera::projection() const {
+  const double f = 1.0 / std::tan(fov_y / 2);
+  const double n = near_plane, fa = far_plane;
+  Mat4 p = Mat4::Zero();
+  p(0, 0) = f / aspect;
+  p(1, 1) = f;
+  p(2, 2) = (fa + n) / (n - fa);
+  p(2, 3) = 2 * fa * n / (n - fa);
+  p(3, 2) = -1;
+  return p;
+}
+
+double Camera::view_depth(const Vec3& p) const {
+  const Vec3 forward = orientation.normalized() * Vec3(0, 0, -1);
+  return (p - eye()).dot(forward);
+}
+
+double fit_distance(double radius, double fov_y, double aspect) {
+  // The sphere fits when the half-angle it subtends, asin(r/d), is at most the smaller half
+  // field of view (horizontal half-angle is atan(aspect · tan(fov_y/2))).
+  const double half_y = fov_y / 2;
+  const double half_x = std::atan(aspect * std::tan(half_y));
+  return radius / std::sin(std::min(half_x, half_y));
+}
+
+Camera make_camera(const BoundingSphere& sphere, const Eigen::Quaterniond& orientation,
+                   double distance, double fov_deg, double aspect) {
+  Camera c;
+  const bool q_ok = orientation.coeffs().allFinite() && orientation.norm() > 1e-12;
+  c.orientation = q_ok ? orientation.normalized() : Eigen::Quaterniond::Identity();
+  c.target = sphere.centre.allFinite() ? sphere.centre : Vec3::Zero();
+  const double radius = sphere.radius > 0 && std::isfinite(sphere.radius) ? sphere.radius : 1.0;
+  c.fov_y = std::clamp(std::isfinite(fov_deg) ? fov_deg : 35.0, 1.0, 170.0) * std::numbers::pi / 180;
+  c.aspect = aspect > 0 && std::isfinite(aspect) ? aspect : 1.0;
+  c.distance = distance > 0 && std::isfinite(distance)
+                   ? distance
+                   : kFitMargin * fit_distance(radius, c.fov_y, c.aspect);
+  // Bracket the sphere; when the eye is inside it, keep a near plane small but not so small
+  // that the depth buffer loses all precision.
+  c.far_plane = c.distance + 1.5 * radius;
+  c.near_plane = std::max(c.distance - 1.5 * radius, 1e-3 * c.far_plane);
+  return c;
+}
+
+}  // namespace s4d

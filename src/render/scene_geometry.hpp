@@ -1,0 +1,48 @@
+// Everything the renderer draws for one frame, computed on the CPU from a Scene: meshes in the
+// 3D shadow space, the camera, and per-vertex depth colours. Pure data, testable without GL.
+#pragma once
+#include <vector>
+
+#include "io/scene.hpp"
+#include "render/camera.hpp"
+#include "render/geometry.hpp"
+
+namespace s4d {
+
+// Sides of curve tubes: enough for smooth silhouettes at GUI sizes.
+inline constexpr int kTubeSides = 16;
+
+struct DrawObject {
+  RenderMesh mesh;
+  std::vector<Vec3f> colours;  // nv × 3, linear RGB in [0, 1]
+  std::vector<double> depth;   // nv, the depth that chose the colour (w for R^4, view depth for R^3)
+  bool surface = true;         // surfaces get the wireframe overlay; tubes do not
+  int dim = 4;                 // ambient dimension of the source object
+};
+
+struct DepthRange {
+  double lo = 0, hi = 0;
+  bool empty() const { return !(hi >= lo); }
+};
+
+struct SceneGeometry {
+  std::vector<DrawObject> objects;  // one per scene object, in order (empty meshes kept)
+  BoundingSphere bounds;            // of every drawn vertex
+  Camera camera;
+  // w over all R^4 objects together, so colours compare across objects; view depth over all R^3
+  // objects together. Empty (hi < lo) when the scene has no object of that dimension.
+  DepthRange w_range{1, 0};
+  DepthRange view_range{1, 0};
+};
+
+// Projects R^4 objects with scene.frame (shadow = first three view coordinates), keeps R^3
+// objects as they are, turns curves into tubes of radius view.tube_radius, fits the camera
+// (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
+// and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
+// colour or a neutral grey. Throws s4d::Error on a mesh with out-of-range triangle indices.
+SceneGeometry build_scene_geometry(const Scene& scene, double aspect);
+
+// The colour of an object when depth colouring is off (or the map is kGrey).
+Vec3f plain_colour(const SceneObject& object);
+
+}  // namespace s4d

@@ -1,0 +1,196 @@
+// Renderer tests through EGL llvmpipe (no display, no GPU). If no GL context can be made these
+// FAIL rather than skip: CI has Mesa, so a missing context is a real breakage.
+#include "render/renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "core/error.hpp"
+#include "render/gl_context.hpp"
+#include "render/test_shapes.hpp"
+
+namespace s4d {
+namespace {
+
+constexpr int kW = 160, kH = 120;
+
+TEST(OffscreenContext, GivesOpenGL33CoreWithMultisampling) {
+  OffscreenContext ctx;
+  const std::string version = ctx.version();
+  ASSERT_FALSE(version.empty());
+  const int major = version[0] - '0', minor = version[2] - '0';
+  EXPECT_GE(major * 10 + minor, 33) << version;
+  EXPECT_FALSE(ctx.renderer().empty());
+  RenderTarget target(32, 16, 4);
+  EXPECT_GE(target.samples(), 1);
+  EXPECT_LE(target.samples(), 4);
+  // Two contexts one after the other (each render_offscreen makes its own) must both work.
+  OffscreenContext again;
+  EXPECT_FALSE(again.version().empty());
+}
+
+TEST(RenderOffscreen, EmptySceneIsExactlyTheBackground) {
+  Scene sc;
+  sc.view.background = Vec3f(0.2f, 0.4f, 0.6f);
+  const Image img = render_offscreen(sc, 40, 30);
+  ASSERT_EQ(img.width, 40);
+  ASSERT_EQ(img.height, 30);
+  for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+    EXPECT_NEAR(img.rgba[i], 51, 1);
+    EXPECT_NEAR(img.rgba[i + 1], 102, 1);
+    EXPECT_NEAR(img.rgba[i + 2], 153, 1);
+    EXPECT_EQ(img.rgba[i + 3], 255);
+  }
+}
+
+TEST(RenderOffscreen, BadSizeThrows) {
+  EXPECT_THROW(render_offscreen(Scene{}, 0, 10), Error);
+  EXPECT_THROW(render_offscreen(Scene{}, 10, -1), Error);
+}
+
+TEST(RenderOffscreen, CliffordTorusCoverageIsSensible) {
+  Scene sc = test::scene_of(test::clifford_torus(48));
+  sc.frame.rotate(Plane{0, 3}, 0.5);
+  sc.frame.rotate(Plane{1, 2}, 0.6);
+  const Image img = render_offscreen(sc, kW, kH);
+  const double c = test::coverage(img, sc.view.background);
+  EXPECT_GT(c, 0.25) << "the fitted torus should fill a good part of the frame";
+  EXPECT_LT(c, 0.75) << "but not all of it";
+}
+
+TEST(RenderOffscreen, TrefoilTubeCoverageIsSensible) {
+  Scene sc = test::scene_of(test::trefoil(200));
+  sc.view.tube_radius = 0.08;
+  const Image img = render_offscreen(sc, kW, kH);
+  const double c = test::coverage(img, sc.view.background);
+  EXPECT_GT(c, 0.08);
+  EXPECT_LT(c, 0.5);
+}
+
+// Mean colour of the non-background pixels in the columns [x0, x1).
+Vec3f mean_colour(const Image& img, const Vec3f& bg, int x0, int x1) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const auto* p = img.pixel(x, y);
+      if (std::abs(p[0] - bg.x() * 255) + std::abs(p[1] - bg.y() * 255) + std::abs(p[2] - bg.z() * 255) < 10)
+        continue;
+      sum += Eigen::Vector3d(p[0], p[1], p[2]);
+      ++n;
+    }
+  return n ? Vec3f((sum / n / 255).cast<float>()) : Vec3f(-1, -1, -1);
+}
+
+TEST(RenderOffscreen, ColourFollowsW) {
+  // w = 0.5 x: the right half of the square is nearer in 4D, so redder; the left bluer.
+  Scene sc = test::scene_of(test::tilted_square(0.5));
+  const Image img = render_offscreen(sc, kW, kH);
+  const Vec3f left = mean_colour(img, sc.view.background, 0, kW / 3);
+  const Vec3f right = mean_colour(img, sc.view.background, 2 * kW / 3, kW);
+  ASSERT_GE(left.x(), 0) << "nothing drawn on the left";
+  ASSERT_GE(right.x(), 0) << "nothing drawn on the right";
+  EXPECT_GT(right.x() - right.z(), 0.25f) << "right side should be red";
+  EXPECT_LT(left.x() - left.z(), -0.15f) << "left side should be blue";
+  // Flip the sign of w with a half turn in the zw plane: the colours swap sides.
+  sc.frame.rotate(Plane{2, 3}, test::kPi);
+  const Image flipped = render_offscreen(sc, kW, kH);
+  const Vec3f left2 = mean_colour(flipped, sc.view.background, 0, kW / 3);
+  EXPECT_GT(left2.x() - left2.z(), 0.25f);
+}
+
+TEST(RenderOffscreen, FourDimensionalRotationChangesTheImage) {
+  Scene sc = test::scene_of(test::clifford_torus(48));
+  sc.frame.rotate(Plane{1, 2}, 0.6);
+  const Image a = render_offscreen(sc, kW, kH);
+  sc.frame.rotate(Plane{0, 3}, test::kPi / 4);
+  const Image b = render_offscreen(sc, kW, kH);
+  EXPECT_GT(test::differing_fraction(a, b, 24), 0.2);
+}
+
+TEST(RenderOffscreen, WireframeDrawsDarkEdgesOverTheSurface) {
+  Scene sc = test::scene_of(test::tilted_square(0.5, 8));
+  const Image plain = render_offscreen(sc, kW, kH);
+  sc.view.wireframe = true;
+  const Image wire = render_offscreen(sc, kW, kH);
+  EXPECT_GT(test::differing_fraction(plain, wire, 24), 0.03);
+  const Vec3f bg = sc.view.background * 255;
+  auto dark = [&](const Image& img) {
+    int n = 0;
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4) {
+      const auto* p = &img.rgba[i];
+      const bool background = std::abs(p[0] - bg.x()) + std::abs(p[1] - bg.y()) + std::abs(p[2] - bg.z()) < 4;
+      n += p[0] < 40 && p[1] < 40 && p[2] < 45 && !background;
+    }
+    return n;
+  };
+  EXPECT_GT(dark(wire), dark(plain) + 200);
+}
+
+TEST(RenderOffscreen, ShadowModeIsFlatAndUnlit) {
+  // A trough curved along y with w = 0.5 x. In the flat shadow mode its colour is w's colour
+  // only, so the centre column (x = 0) is one colour; lit, it shades with the curvature.
+  Scene sc = test::scene_of(test::tilted_square(0.5, 33, 0.8));
+  sc.view.trackball = Eigen::Quaterniond(Eigen::AngleAxisd(-0.5, Vec3::UnitX()));
+  const Image lit = render_offscreen(sc, kW, kH);
+  sc.view.shadow = true;
+  const Image flat = render_offscreen(sc, kW, kH);
+  EXPECT_GT(test::differing_fraction(lit, flat, 24), 0.1);
+  const Vec3f bg = sc.view.background * 255;
+  auto column_spread = [&](const Image& img) {
+    int lo = 255, hi = 0;
+    for (int y = 0; y < kH; ++y) {
+      const auto* p = img.pixel(kW / 2, y);
+      if (std::abs(p[0] - bg.x()) + std::abs(p[1] - bg.y()) + std::abs(p[2] - bg.z()) < 30) continue;
+      // Skip anti-aliased silhouette pixels: they blend with the background.
+      const auto* up = img.pixel(kW / 2, std::max(y - 1, 0));
+      const auto* down = img.pixel(kW / 2, std::min(y + 1, kH - 1));
+      if (std::abs(up[0] - bg.x()) < 30 || std::abs(down[0] - bg.x()) < 30) continue;
+      lo = std::min<int>(lo, p[1]);
+      hi = std::max<int>(hi, p[1]);
+    }
+    return hi - lo;
+  };
+  EXPECT_LE(column_spread(flat), 3);
+  EXPECT_GT(column_spread(lit), 40);
+}
+
+TEST(RenderOffscreen, DepthColourOffGivesGrey) {
+  Scene sc = test::scene_of(test::clifford_torus(32));
+  sc.frame.rotate(Plane{0, 3}, 0.5);
+  sc.frame.rotate(Plane{1, 2}, 0.6);
+  auto max_chroma = [&](const Image& img) {
+    int worst = 0;
+    for (std::size_t i = 0; i < img.rgba.size(); i += 4)
+      worst = std::max(worst, std::abs(int(img.rgba[i]) - int(img.rgba[i + 2])));
+    return worst;
+  };
+  EXPECT_GT(max_chroma(render_offscreen(sc, kW, kH)), 60) << "depth colour should show red/blue";
+  sc.view.depth_colour = false;
+  // kGrey is a slightly warm grey (0.78, 0.76, 0.72): red - blue stays within ~0.06 of full scale.
+  EXPECT_LE(max_chroma(render_offscreen(sc, kW, kH)), 18);
+}
+
+TEST(Renderer, DrawIntoATargetMatchesRenderOffscreen) {
+  Scene sc = test::scene_of(test::trefoil(120));
+  const Image expected = render_offscreen(sc, 64, 48);
+  OffscreenContext ctx;
+  RenderTarget target(64, 48, 4);
+  Renderer r;
+  target.bind();
+  r.draw(sc, 64, 48);
+  const Image got = target.resolve_and_read();
+  EXPECT_EQ(test::differing_fraction(expected, got, 0), 0.0);
+  // Reading the resolved framebuffer again through the renderer gives the same pixels.
+  EXPECT_EQ(test::differing_fraction(got, r.read_pixels(64, 48), 0), 0.0);
+  EXPECT_GT(r.camera().distance, 0);
+  // Drawing again with fewer objects (GPU buffers freed) still works.
+  target.bind();
+  r.draw(Scene{}, 64, 48);
+  EXPECT_LT(test::coverage(target.resolve_and_read(), Scene{}.view.background), 0.001);
+}
+
+}  // namespace
+}  // namespace s4d

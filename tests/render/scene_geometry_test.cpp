@@ -1,0 +1,130 @@
+// Scene geometry tests: depth colour follows w across objects (R^4) and view depth (R^3), the
+// colour switch, tube building for curves, the camera containing everything drawn.
+#include "render/scene_geometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include "render/test_shapes.hpp"
+
+namespace s4d {
+namespace {
+
+// Redness: red minus blue, +1 for pure red, -1 for pure blue.
+float redness(const Vec3f& c) { return c.x() - c.z(); }
+
+TEST(SceneGeometry, FourDimensionalDepthColourIsSharedAcrossObjects) {
+  // Two parallel squares at w = -1 and w = +1 (flat in w): the far one must be blue, the near
+  // one red, which only holds if the w range spans both objects.
+  Scene sc;
+  for (double w : {-1.0, 1.0}) {
+    Surface<4> s = test::tilted_square(0.0, 4);
+    for (auto& v : s.vertices) v[3] = w;
+    SceneObject o;
+    o.shape = s;
+    sc.objects.push_back(o);
+  }
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  ASSERT_EQ(g.objects.size(), 2u);
+  EXPECT_DOUBLE_EQ(g.w_range.lo, -1);
+  EXPECT_DOUBLE_EQ(g.w_range.hi, 1);
+  EXPECT_TRUE(g.view_range.empty());
+  for (const Vec3f& c : g.objects[0].colours) EXPECT_LT(redness(c), -0.4f);
+  for (const Vec3f& c : g.objects[1].colours) EXPECT_GT(redness(c), 0.4f);
+  EXPECT_EQ(g.objects[0].colours[0], map_colour(ColourMap::kCoolWarm, 0.0));
+  EXPECT_EQ(g.objects[1].colours[0], map_colour(ColourMap::kCoolWarm, 1.0));
+}
+
+TEST(SceneGeometry, ColourFollowsWAfterAFourDimensionalRotation) {
+  Scene sc = test::scene_of(test::tilted_square(0.5, 8));
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  const DrawObject& o = g.objects[0];
+  for (std::size_t v = 0; v < o.mesh.vertex_count(); ++v) {
+    // w = 0.5 x, and the identity frame keeps x: redness grows with x.
+    EXPECT_NEAR(o.depth[v], 0.5 * o.mesh.positions[v].x(), 1e-12);
+    for (std::size_t u = 0; u < o.mesh.vertex_count(); ++u)
+      if (o.mesh.positions[u].x() > o.mesh.positions[v].x() + 0.1) {
+        EXPECT_GT(redness(o.colours[u]), redness(o.colours[v]));
+      }
+  }
+  // A quarter turn in xw trades x and w: the shadow's x now spans the old w range (±0.5) and
+  // the 4D depth the old x range (±1).
+  sc.frame.rotate(Plane{0, 3}, test::kPi / 2);
+  const SceneGeometry h = build_scene_geometry(sc, 1.0);
+  double max_x = 0;
+  for (const Vec3& p : h.objects[0].mesh.positions) max_x = std::max(max_x, std::abs(p.x()));
+  EXPECT_NEAR(max_x, 0.5, 1e-9);
+  EXPECT_NEAR(h.w_range.lo, -1, 1e-9);
+  EXPECT_NEAR(h.w_range.hi, 1, 1e-9);
+}
+
+TEST(SceneGeometry, ThreeDimensionalObjectsAreColouredByDistanceFromTheCamera) {
+  Scene sc = test::scene_of(test::uv_sphere(12, 16));
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  EXPECT_TRUE(g.w_range.empty());
+  const DrawObject& o = g.objects[0];
+  EXPECT_EQ(o.dim, 3);
+  // The identity trackball looks down -z: the +z pole is nearest (red), the -z pole farthest.
+  std::size_t top = 0, bottom = 0;
+  for (std::size_t v = 0; v < o.mesh.vertex_count(); ++v) {
+    if (o.mesh.positions[v].z() > o.mesh.positions[top].z()) top = v;
+    if (o.mesh.positions[v].z() < o.mesh.positions[bottom].z()) bottom = v;
+  }
+  EXPECT_GT(redness(o.colours[top]), 0.4f);
+  EXPECT_LT(redness(o.colours[bottom]), -0.4f);
+  EXPECT_NEAR(g.view_range.hi - g.view_range.lo, 2, 1e-9);
+}
+
+TEST(SceneGeometry, DepthColourOffGivesGreyOrTheObjectColour) {
+  Scene sc = test::scene_of(test::clifford_torus(12));
+  sc.view.depth_colour = false;
+  SceneGeometry g = build_scene_geometry(sc, 1.0);
+  for (const Vec3f& c : g.objects[0].colours) EXPECT_EQ(c, map_colour(ColourMap::kGrey, 0.5));
+  sc.objects[0].colour = Vec3f(0.2f, 0.9f, 0.1f);
+  g = build_scene_geometry(sc, 1.0);
+  for (const Vec3f& c : g.objects[0].colours) EXPECT_EQ(c, Vec3f(0.2f, 0.9f, 0.1f));
+  // The grey map is a way to switch depth colour off too.
+  sc.view.depth_colour = true;
+  sc.view.colour_map = ColourMap::kGrey;
+  g = build_scene_geometry(sc, 1.0);
+  for (const Vec3f& c : g.objects[0].colours) EXPECT_EQ(c, Vec3f(0.2f, 0.9f, 0.1f));
+}
+
+TEST(SceneGeometry, CurvesBecomeTubesAndTheCameraSeesEverything) {
+  Scene sc = test::scene_of(test::trefoil(50));
+  Curve<4> c4 = lift_to_4d(test::trefoil(40, 0.2));
+  for (auto& p : c4.components[0].points) p[3] = p[0];  // a 4D curve with varying w
+  SceneObject o;
+  o.shape = c4;
+  sc.objects.push_back(o);
+  sc.view.tube_radius = 0.05;
+  const SceneGeometry g = build_scene_geometry(sc, 1.5);
+  ASSERT_EQ(g.objects.size(), 2u);
+  EXPECT_FALSE(g.objects[0].surface);
+  EXPECT_EQ(g.objects[0].mesh.vertex_count(), 50u * kTubeSides);
+  EXPECT_EQ(g.objects[1].mesh.vertex_count(), 40u * kTubeSides);
+  EXPECT_EQ(g.objects[1].dim, 4);
+  EXPECT_FALSE(g.w_range.empty());
+  EXPECT_FALSE(g.view_range.empty());
+  const Mat4 m = g.camera.projection() * g.camera.view();
+  for (const DrawObject& d : g.objects)
+    for (const Vec3& p : d.mesh.positions) {
+      const Eigen::Vector4d q = m * p.homogeneous();
+      ASSERT_GT(q.w(), 0);
+      EXPECT_LE(std::abs(q.x() / q.w()), 1.0);
+      EXPECT_LE(std::abs(q.y() / q.w()), 1.0);
+      EXPECT_LE(std::abs(q.z() / q.w()), 1.0);
+    }
+  // A bad tube radius falls back to the default instead of producing an empty or inverted tube.
+  sc.view.tube_radius = -1;
+  EXPECT_EQ(build_scene_geometry(sc, 1.0).objects[0].mesh.vertex_count(), 50u * kTubeSides);
+}
+
+TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
+  const SceneGeometry g = build_scene_geometry(Scene{}, 1.0);
+  EXPECT_TRUE(g.objects.empty());
+  EXPECT_TRUE(g.camera.view().allFinite());
+  EXPECT_TRUE(g.camera.projection().allFinite());
+}
+
+}  // namespace
+}  // namespace s4d
