@@ -68,8 +68,8 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin);
 // objects with neither (edited geometry) are written as meshes beside the scene file.
 void save_scene(const Scene& scene, const std::filesystem::path& path);
 
-// Loads any object file by extension: .off/.4off (surfaces), .vect/.txt/.xyz/.curve (curves),
-// or a generator call such as "spun-trefoil:n=48". Throws Error/ParseError.
+// Loads any object file by extension: .off/.4off/.noff (surfaces), .vect/.4vect/.txt/.xyz/.curve
+// (curves), or a generator call such as "spun-trefoil:n=48". Throws Error/ParseError.
 SceneObject load_object(const std::string& spec);
 // Loads a scene file (.json) or wraps a single object (see load_object) in a default scene.
 Scene load_scene_or_object(const std::string& spec);

@@ -44,8 +44,8 @@ Body make_body() {
 }
 
 // Cubic Hermite from a (unit tangent ta) to b (unit tangent tb), k samples excluding a.
-void hermite(std::vector<Vec3>& out, const Vec3& a, const Vec3& ta, const Vec3& b, const Vec3& tb,
-             int k) {
+// Points are taken by value: callers pass out.back(), which push_back may reallocate.
+void hermite(std::vector<Vec3>& out, Vec3 a, Vec3 ta, Vec3 b, Vec3 tb, int k) {
   const double len = (b - a).norm();
   for (int i = 1; i <= k; ++i) {
     const double u = static_cast<double>(i) / k, u2 = u * u, u3 = u2 * u;
@@ -55,13 +55,12 @@ void hermite(std::vector<Vec3>& out, const Vec3& a, const Vec3& ta, const Vec3& 
 }
 
 // Straight segment from a to b, k samples excluding a.
-void line(std::vector<Vec3>& out, const Vec3& a, const Vec3& b, int k) {
+void line(std::vector<Vec3>& out, Vec3 a, Vec3 b, int k) {
   for (int i = 1; i <= k; ++i) out.push_back(a + (b - a) * (static_cast<double>(i) / k));
 }
 
 // Quarter circle around `centre` from centre + r*u to centre + r*v, k samples excluding the first.
-void quarter(std::vector<Vec3>& out, const Vec3& centre, const Vec3& u, const Vec3& v, double r,
-             int k) {
+void quarter(std::vector<Vec3>& out, Vec3 centre, Vec3 u, Vec3 v, double r, int k) {
   for (int i = 1; i <= k; ++i) {
     const double a = 0.5 * std::numbers::pi * i / k;
     out.push_back(centre + r * (std::cos(a) * u + std::sin(a) * v));

@@ -1,0 +1,126 @@
+// save_scene: the inverse of parse_scene. Generated objects keep their generator call, loaded ones
+// their path (relative to the scene when possible); edited geometry goes to a mesh file beside it.
+#include <cmath>
+#include <set>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "io/object_file.hpp"
+#include "io/scene.hpp"
+#include "io/text_scanner.hpp"
+
+namespace s4d {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Integral values are written as integers ("n": 48, not 48.0) so the files read naturally.
+Json number(double v) {
+  if (std::isfinite(v) && v == std::floor(v) && std::abs(v) < 1e15) return static_cast<long long>(v);
+  return v;
+}
+
+Json array(const auto& v, int n) {
+  Json a = Json::array();
+  for (int i = 0; i < n; ++i) a.push_back(number(static_cast<double>(v[i])));
+  return a;
+}
+
+// A file-name-safe version of an object name: letters, digits, '-' and '_' survive.
+std::string safe_name(const std::string& name) {
+  std::string out;
+  for (char c : name)
+    out += ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_') ? c : '_';
+  return out.empty() ? "object" : out;
+}
+
+std::string path_for_scene(const std::string& source, const std::filesystem::path& scene_dir) {
+  std::error_code ec;
+  const auto abs_source = std::filesystem::absolute(source, ec);
+  if (ec) return source;
+  const auto abs_dir = std::filesystem::absolute(scene_dir.empty() ? "." : scene_dir, ec);
+  if (ec) return abs_source.string();
+  const auto rel = abs_source.lexically_relative(abs_dir);
+  return rel.empty() ? abs_source.string() : rel.generic_string();
+}
+
+}  // namespace
+
+void save_scene(const Scene& scene, const std::filesystem::path& path) {
+  const std::filesystem::path dir = path.parent_path();
+  Json root;
+  root["version"] = kSceneVersion;
+  Json objects = Json::array();
+  std::set<std::string> mesh_names;
+  for (const SceneObject& o : scene.objects) {
+    Json j;
+    j["name"] = o.name;
+    const bool has_offset = !o.offset.isZero(0);
+    if (o.generator) {
+      j["generator"] = o.generator->name;
+      Json params = Json::object();
+      for (const auto& [k, v] : o.generator->params) {
+        if (!std::isfinite(v)) throw Error("cannot save scene: parameter " + k + " of " + o.name + " is not finite");
+        params[k] = number(v);
+      }
+      if (!params.empty()) j["params"] = params;
+      if (has_offset) j["offset"] = array(o.offset, 4);
+    } else if (!o.source_path.empty()) {
+      j["path"] = path_for_scene(o.source_path, dir);
+      if (has_offset) j["offset"] = array(o.offset, 4);
+    } else {
+      // Edited geometry: the offset is already in the vertices, so it is not written again.
+      std::string file = path.stem().string() + "." + safe_name(o.name);
+      for (int k = 2; mesh_names.count(file); ++k) file = path.stem().string() + "." + safe_name(o.name) + "-" + std::to_string(k);
+      mesh_names.insert(file);
+      file += native_extension(o.shape);
+      write_shape_file(o.shape, dir / file);
+      j["path"] = file;
+    }
+    if (o.colour) j["colour"] = array(*o.colour, 3);
+    objects.push_back(std::move(j));
+  }
+  root["objects"] = std::move(objects);
+
+  Json matrix = Json::array();
+  for (int i = 0; i < 4; ++i) matrix.push_back(array(scene.frame.matrix().row(i), 4));
+  root["frame"] = {{"matrix", matrix}};
+
+  const ViewSettings& v = scene.view;
+  const auto& q = v.trackball;
+  Json view;
+  view["trackball"] = Json::array({number(q.w()), number(q.x()), number(q.y()), number(q.z())});
+  view["distance"] = number(v.distance);
+  view["fov_deg"] = number(v.fov_deg);
+  view["depth_colour"] = v.depth_colour;
+  view["colour_map"] = std::string(colour_map_name(v.colour_map));
+  view["wireframe"] = v.wireframe;
+  view["shadow"] = v.shadow;
+  view["tube_radius"] = number(v.tube_radius);
+  view["background"] = array(v.background, 3);
+  root["view"] = std::move(view);
+
+  const PhysicsSettings& p = scene.physics;
+  Json physics;
+  physics["time_step"] = number(p.time_step);
+  physics["thickness"] = number(p.thickness);
+  physics["gravity"] = array(p.gravity, 4);
+  physics["mass"] = number(p.mass);
+  physics["stiffness"] = number(p.stiffness);
+  physics["beta"] = number(p.beta);
+  physics["damping"] = number(p.damping);
+  physics["friction"] = number(p.friction);
+  physics["integrator"] = p.integrator;
+  root["physics"] = std::move(physics);
+
+  std::string text;
+  try {
+    text = root.dump(2) + "\n";
+  } catch (const Json::exception& e) {  // e.g. an object name that is not valid UTF-8
+    throw Error("cannot save scene " + path.string() + ": " + e.what());
+  }
+  write_text_file(path, text);
+}
+
+}  // namespace s4d
