@@ -48,7 +48,7 @@ double fit_distance(double radius, double fov_y, double aspect) {
 }
 
 Camera make_camera(const BoundingSphere& sphere, const Eigen::Quaterniond& orientation,
-                   double distance, double fov_deg, double aspect) {
+                   double distance, double fov_deg, double aspect, double zoom) {
   Camera c;
   const bool q_ok = orientation.coeffs().allFinite() && orientation.norm() > 1e-12;
   c.orientation = q_ok ? orientation.normalized() : Eigen::Quaterniond::Identity();
@@ -59,6 +59,8 @@ Camera make_camera(const BoundingSphere& sphere, const Eigen::Quaterniond& orien
   c.distance = distance > 0 && std::isfinite(distance)
                    ? distance
                    : kFitMargin * fit_distance(radius, c.fov_y, c.aspect);
+  // Zoom (the GUI wheel) moves the eye along its line of sight; a bad value means no zoom.
+  if (std::isfinite(zoom) && zoom > 0) c.distance /= std::clamp(zoom, 1e-3, 1e3);
   // Bracket the sphere; when the eye is inside it, keep a near plane small but not so small
   // that the depth buffer loses all precision.
   c.far_plane = c.distance + 1.5 * radius;

@@ -33,6 +33,7 @@ double fit_distance(double radius, double fov_y, double aspect);
 // near/far planes bracket the sphere. fov_deg is clamped to [1, 170] degrees and a degenerate
 // sphere (radius 0) is treated as radius 1, so any input gives usable matrices.
 Camera make_camera(const BoundingSphere& sphere, const Eigen::Quaterniond& orientation,
-                   double distance, double fov_deg, double aspect);
+                   double distance, double fov_deg, double aspect,
+                   double zoom = 1.0);
 
 }  // namespace s4d

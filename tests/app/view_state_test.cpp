@@ -15,9 +15,10 @@ TEST(ViewState, ShiftDragTurnsTheWPlanes) {
   EXPECT_EQ(v.plane_angles()[4], 0.0f);
   v.drag(DragMode::kRotateW, 0, -200, 600);  // vertical: yw only
   EXPECT_NEAR(v.plane_angles()[4], -60.0f, 1e-4);
-  // The composed frame mixes x and w: a point on the x axis gains depth in w.
+  // The composed frame mixes x and w: the x axis gains depth sin(30°) from xw, and yw's
+  // cos(60°) scales what the w axis keeps of it.
   v.apply_to(scene);
-  EXPECT_GT(std::abs(scene.frame.depth(Vec4::UnitX())), 0.4);
+  EXPECT_NEAR(std::abs(scene.frame.depth(Vec4::UnitX())), 0.25, 1e-6);
 }
 
 TEST(ViewState, AnglesWrapIntoHalfTurns) {

@@ -93,6 +93,15 @@ TEST(Camera, FitDistanceMatchesTheTangentCone) {
   EXPECT_NEAR(fit_distance(2, fov, 0.5), 2 / std::sin(half_x), 1e-12);
 }
 
+TEST(Camera, ZoomMovesTheEyeAlongItsLineOfSight) {
+  const BoundingSphere sphere{Vec3(1, 2, 3), 2.0};
+  const Camera fitted = make_camera(sphere, Eigen::Quaterniond::Identity(), 0, 35, 1.5);
+  const Camera closer = make_camera(sphere, Eigen::Quaterniond::Identity(), 0, 35, 1.5, 2.0);
+  EXPECT_NEAR(closer.distance, fitted.distance / 2, 1e-12);
+  const Camera ignored = make_camera(sphere, Eigen::Quaterniond::Identity(), 0, 35, 1.5, std::nan(""));
+  EXPECT_DOUBLE_EQ(ignored.distance, fitted.distance);
+}
+
 TEST(Camera, BadInputStillGivesFiniteMatrices) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   BoundingSphere s;

@@ -1,0 +1,310 @@
+// `shadow4d knot identify|code|compare|relax|flip|resample`: the knot engine from the command
+// line, with --json for scripts. Curves come from any curve file or generator call.
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+
+#include "command.hpp"
+#include "core/error.hpp"
+#include "core/plane.hpp"
+#include "io/object_file.hpp"
+#include "io/scene.hpp"
+#include "knots/depth_edit.hpp"
+#include "knots/knot_identify.hpp"
+#include "knots/relax.hpp"
+#include "knots/resample.hpp"
+
+namespace s4d::cli {
+namespace {
+
+using nlohmann::json;
+
+// [SECTION] input
+
+Curve<3> load_knot_curve(const std::string& spec) {
+  const SceneObject obj = load_object(spec);
+  if (const auto* c3 = std::get_if<Curve<3>>(&obj.shape)) return *c3;
+  if (const auto* c4 = std::get_if<Curve<4>>(&obj.shape)) {
+    // A curve of R^4 that lies in w = 0 is a knot of R^3; anything else is not a classical knot.
+    Curve<3> c;
+    for (const auto& pl : c4->components) {
+      Polyline<3> p;
+      p.closed = pl.closed;
+      for (const auto& q : pl.points) {
+        if (std::abs(q.w()) > 1e-12)
+          throw Error(spec + ": a curve of R^4 off the w = 0 space is not a knot of R^3");
+        p.points.push_back(q.head<3>());
+      }
+      c.components.push_back(std::move(p));
+    }
+    return c;
+  }
+  throw Error(spec + " is a surface; knot commands need a closed curve");
+}
+
+// "xz=30,yz=10": plane rotations in degrees, applied in order.
+Frame<3> parse_view(const std::string& text) {
+  Frame<3> f;
+  if (text.empty()) return f;
+  std::istringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw Error("bad rotation '" + item + "', expected e.g. xz=30");
+    const auto plane = parse_plane(item.substr(0, eq), 3);
+    if (!plane) throw Error("unknown rotation plane '" + item.substr(0, eq) + "' (use xy, xz or yz)");
+    double deg = 0;
+    try {
+      std::size_t used = 0;
+      deg = std::stod(item.substr(eq + 1), &used);
+      if (used != item.size() - eq - 1 || !std::isfinite(deg)) throw std::invalid_argument("angle");
+    } catch (const std::exception&) {
+      throw Error("bad angle in '" + item + "'");
+    }
+    f.rotate(*plane, deg * std::numbers::pi / 180);
+  }
+  return f;
+}
+
+// [SECTION] output
+
+json factor_json(const KnotFactor& f) {
+  return {{"name", f.entry->display_name()},
+          {"rolfsen", f.entry->rolfsen_name},
+          {"dt", f.entry->dt_name},
+          {"regina", f.entry->regina_name},
+          {"crossings", f.entry->crossings},
+          {"chirality", chirality_name(f.chirality)}};
+}
+
+json invariants_json(const KnotInvariants& v) {
+  return {{"components", v.components},
+          {"diagram_crossings", v.diagram_crossings},
+          {"simplified_crossings", v.simplified_crossings},
+          {"writhe", v.writhe},
+          {"linking_numbers", v.linking},
+          {"homfly_pt", v.homfly_text()},
+          {"jones", v.jones_text()},
+          {"alexander", v.alexander_text()},
+          {"determinant", v.determinant}};
+}
+
+json identification_json(const KnotIdentification& id) {
+  json j = {{"kind", kind_name(id.kind)},
+            {"name", id.name},
+            {"proven", id.proven},
+            {"invariants", invariants_json(id.invariants)}};
+  json cands = json::array();
+  for (const auto& f : id.candidates) {
+    json factors = json::array();
+    for (const auto& k : f) factors.push_back(factor_json(k));
+    cands.push_back({{"text", factorisation_text(f)}, {"factors", factors}});
+  }
+  j["candidates"] = cands;
+  if (id.kind == KnotKind::kLink) {
+    j["link_name"] = id.link_name;
+    json comps = json::array();
+    for (const auto& c : id.components) comps.push_back(identification_json(c));
+    j["components"] = comps;
+  }
+  return j;
+}
+
+void print_identification(const KnotIdentification& id, const std::string& indent = "") {
+  std::cout << indent << "knot: " << id.name << (id.proven ? "" : "  [not proven]") << "\n";
+  const auto& v = id.invariants;
+  if (id.candidates.size() > 1) {
+    std::cout << indent << "candidates (the invariants cannot decide):\n";
+    for (const auto& f : id.candidates) std::cout << indent << "  " << factorisation_text(f) << "\n";
+  }
+  for (const auto& f : id.candidates)
+    for (const auto& k : f)
+      if (k.chirality == Chirality::kUnknown) {
+        std::cout << indent << "chirality of " << k.entry->display_name()
+                  << ": unknown (HOMFLY-PT is symmetric)\n";
+        break;
+      }
+  std::cout << indent << "crossings: " << v.diagram_crossings << " in this view, "
+            << v.simplified_crossings << " after simplification\n"
+            << indent << "HOMFLY-PT: " << v.homfly_text() << "\n"
+            << indent << "Jones: " << v.jones_text() << "\n"
+            << indent << "Alexander: " << v.alexander_text() << "\n"
+            << indent << "determinant: " << v.determinant << "\n";
+  if (id.kind == KnotKind::kLink)
+    for (std::size_t i = 0; i < id.components.size(); ++i)
+      std::cout << indent << "component " << i << ": " << id.components[i].name << "\n";
+}
+
+json codes_json(const KnotDiagram& d) {
+  const ReginaCodes r = regina_codes(d);
+  return {{"crossings", d.crossing_count()},
+          {"components", d.component_count()},
+          {"writhe", d.writhe()},
+          {"linking_numbers", d.linking_numbers()},
+          {"gauss", d.gauss_code()},
+          {"extended_gauss", d.extended_gauss_code()},
+          {"signed_gauss", d.signed_gauss_code()},
+          {"regina_gauss", r.gauss},
+          {"oriented_gauss", r.oriented_gauss},
+          {"pd", d.pd_code()},
+          {"dt", r.dt},
+          {"dt_alpha", r.dt_alpha}};
+}
+
+// [SECTION] sub-commands
+
+struct Common {
+  std::string file, view;
+  bool json_out = false;
+};
+
+void add_common(CLI::App* s, Common& c, bool with_view = true) {
+  s->add_option("file", c.file, "curve file (.curve/.txt/.xyz/.vect) or generator call")->required();
+  if (with_view) s->add_option("--rotate", c.view, "view rotation, e.g. xz=30,yz=10 (degrees)");
+  s->add_flag("--json", c.json_out, "machine-readable output");
+}
+
+void setup(CLI::App& knot) {
+  knot.require_subcommand(1);
+
+  static Common idc;
+  static bool prove = false;
+  auto* identify = knot.add_subcommand("identify", "name the knot or link of a curve");
+  add_common(identify, idc);
+  identify->add_flag("--prove-unknot", prove, "when only invariants say unknot, prove it (slow)");
+  identify->callback([] {
+    IdentifyOptions o;
+    o.frame = parse_view(idc.view);
+    o.prove_unknot = prove;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto id = identify_knot(load_knot_curve(idc.file), o);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (idc.json_out) {
+      json j = identification_json(id);
+      j["milliseconds"] = ms;
+      std::cout << j.dump(2) << "\n";
+    } else {
+      print_identification(id);
+    }
+  });
+
+  static Common cc;
+  auto* code = knot.add_subcommand("code", "Gauss, PD and DT codes of a curve's diagram in a view");
+  add_common(code, cc);
+  code->callback([] {
+    Frame<3> used;
+    const KnotDiagram d = diagram_from_curve(load_knot_curve(cc.file), parse_view(cc.view), {}, &used);
+    const json j = codes_json(d);
+    if (cc.json_out) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    for (const auto& [k, v] : j.items())
+      std::cout << k << ": " << (v.is_string() ? v.get<std::string>() : v.dump()) << "\n";
+  });
+
+  static Common ca;
+  static std::string file_b;
+  auto* compare = knot.add_subcommand("compare", "are two curves the same knot?");
+  add_common(compare, ca, false);
+  compare->add_option("other", file_b, "the second curve")->required();
+  compare->callback([] {
+    const auto r = compare_knots(load_knot_curve(ca.file), load_knot_curve(file_b));
+    if (ca.json_out) {
+      std::cout << json{{"verdict", sameness_name(r.verdict)},
+                        {"reason", r.reason},
+                        {"a", identification_json(r.a)},
+                        {"b", identification_json(r.b)}}
+                       .dump(2)
+                << "\n";
+    } else {
+      std::cout << sameness_name(r.verdict) << ": " << r.reason << "\n";
+    }
+  });
+
+  static Common rc;
+  static std::string relax_out;
+  static int iterations = 2000;
+  auto* relaxc = knot.add_subcommand("relax", "knot-energy relaxation that never passes through itself");
+  add_common(relaxc, rc, false);
+  relaxc->add_option("--out", relax_out, "where to write the relaxed curve")->required();
+  relaxc->add_option("--iterations", iterations, "relaxation steps")->check(CLI::Range(1, 10000000));
+  relaxc->callback([] {
+    const Curve<3> c = load_knot_curve(rc.file);
+    RelaxModel m;
+    RelaxData d;
+    relax_setup(c, m, d);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < iterations; ++i) relax_step(m, d);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const Curve<3> out = relax_curve(m, d);
+    write_shape_file(out, relax_out);
+    const auto before = identify_knot(c), after = identify_knot(out);
+    if (rc.json_out) {
+      std::cout << json{{"iterations", iterations}, {"seconds", s}, {"limited_steps", d.limited_steps},
+                        {"before", before.name}, {"after", after.name},
+                        {"crossings_before", before.invariants.diagram_crossings},
+                        {"crossings_after", after.invariants.diagram_crossings}}
+                       .dump(2)
+                << "\n";
+    } else {
+      std::cout << "relaxed " << iterations << " steps in " << s << " s (" << iterations / s
+                << " it/s); knot " << before.name << " -> " << after.name << "; fewest crossings "
+                << before.invariants.diagram_crossings << " -> " << after.invariants.diagram_crossings
+                << "\nwrote " << relax_out << "\n";
+    }
+  });
+
+  static Common fc;
+  static int crossing = 0;
+  static std::string flip_out;
+  auto* flip = knot.add_subcommand("flip", "change one crossing (over <-> under) and name the result");
+  add_common(flip, fc);
+  flip->add_option("--crossing", crossing, "crossing label as in `knot code` (1-based)")->required();
+  flip->add_option("--out", flip_out, "where to write the changed curve");
+  flip->callback([] {
+    const Curve<3> c = load_knot_curve(fc.file);
+    const Frame<3> view = parse_view(fc.view);
+    const Curve<3> changed = flip_crossing(c, view, crossing);
+    if (!flip_out.empty()) write_shape_file(changed, flip_out);
+    IdentifyOptions o;
+    o.frame = view;
+    const auto before = identify_knot(c, o), after = identify_knot(changed, o);
+    if (fc.json_out) {
+      std::cout << json{{"crossing", crossing}, {"before", identification_json(before)},
+                        {"after", identification_json(after)}}
+                       .dump(2)
+                << "\n";
+    } else {
+      std::cout << "crossing " << crossing << " changed: " << before.name << " -> " << after.name << "\n";
+      if (!flip_out.empty()) std::cout << "wrote " << flip_out << "\n";
+    }
+  });
+
+  static Common sc;
+  static std::string resample_out;
+  static int points = 0;
+  auto* resample = knot.add_subcommand("resample", "nearly equal segments, never passing through itself");
+  add_common(resample, sc, false);
+  resample->add_option("--points", points, "total number of points")->required()->check(CLI::Range(3, 10000000));
+  resample->add_option("--out", resample_out, "where to write the curve")->required();
+  resample->callback([] {
+    ResampleStats st;
+    const Curve<3> out = resample_curve_to_count(load_knot_curve(sc.file), points, &st);
+    write_shape_file(out, resample_out);
+    if (sc.json_out)
+      std::cout << json{{"points", out.point_count()}, {"moves", st.moves}, {"refused", st.refused}}.dump(2) << "\n";
+    else
+      std::cout << "resampled to " << out.point_count() << " points (" << st.refused
+                << " chords refused to avoid a pass-through); wrote " << resample_out << "\n";
+  });
+}
+
+const CommandRegistrar kKnot("knot", "knot engine: identify, code, compare, relax, flip, resample", setup);
+
+}  // namespace
+}  // namespace s4d::cli

@@ -1,0 +1,72 @@
+// Names the knot or link of a curve: unknot, prime knots of the census (Rolfsen and DT names) with
+// chirality, composite knots from HOMFLY-PT factorisations, links by their components and linking
+// numbers. When the invariants cannot decide, every candidate is listed.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/frame.hpp"
+#include "knots/knot_diagram.hpp"
+#include "knots/knot_index.hpp"
+#include "knots/knot_invariants.hpp"
+#include "shape/curve.hpp"
+
+namespace s4d {
+
+enum class Chirality {
+  kAsTable,      // the knot of the table's reference diagram
+  kMirror,       // its mirror image
+  kAmphichiral,  // proven equal to its mirror image (by Reidemeister moves, when indexing)
+  kUnknown,      // HOMFLY-PT is symmetric and no proof of amphichirality is known
+};
+const char* chirality_name(Chirality c);  // "as-table", "mirror", "amphichiral", "unknown"
+
+struct KnotFactor {
+  const KnotTableEntry* entry = nullptr;
+  Chirality chirality = Chirality::kAsTable;
+  std::string text() const;  // "3_1", "3_1 mirror", "4_1"
+};
+// One possible answer: the prime factors of a knot (a single factor for a prime knot).
+using KnotFactorisation = std::vector<KnotFactor>;
+std::string factorisation_text(const KnotFactorisation& f);  // "3_1 # 3_1 mirror"
+
+enum class KnotKind { kUnknot, kPrime, kComposite, kLink, kUnknown };
+const char* kind_name(KnotKind k);  // "unknot", "prime", "composite", "link", "unknown"
+
+struct KnotIdentification {
+  KnotKind kind = KnotKind::kUnknown;
+  std::string name;       // one line for people: "5_1 (DT 5a_2)", "3_1 # 4_1", "unknot", ...
+  bool proven = false;    // the invariants (or a 0-crossing diagram) leave no other possibility
+  std::vector<KnotFactorisation> candidates;  // knots: every answer the invariants allow
+  KnotInvariants invariants;
+  KnotDiagram diagram;    // the diagram analysed (in `frame`)
+  Frame<3> frame;         // the view actually used (after any generic perturbation)
+  std::vector<KnotIdentification> components;  // links: each component on its own
+  std::string link_name;  // links: a well-known name when the link is one ("Hopf link"), else ""
+};
+
+struct IdentifyOptions {
+  Frame<3> frame;             // the view to start from
+  bool choose_view = true;    // also try the curve's principal axes; keep the view with fewest crossings
+  bool prove_unknot = false;  // use Regina's solid-torus recognition when only invariants say unknot
+  const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
+};
+
+// Throws Error for invalid curves (see diagram_from_curve).
+KnotIdentification identify_knot(const Curve<3>& curve, const IdentifyOptions& options = {});
+KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOptions& options = {});
+
+// The diagram of one component of a link on its own (crossings with other components dropped).
+KnotDiagram component_diagram(const KnotDiagram& diagram, int component);
+
+// The paper's user-study question "are these the same knot?".
+enum class Sameness { kSame, kMirror, kDifferent, kUndecided };
+const char* sameness_name(Sameness s);  // "same", "mirror", "different", "undecided"
+struct KnotComparison {
+  Sameness verdict = Sameness::kUndecided;
+  std::string reason;  // one sentence
+  KnotIdentification a, b;
+};
+KnotComparison compare_knots(const Curve<3>& a, const Curve<3>& b, const IdentifyOptions& options = {});
+
+}  // namespace s4d

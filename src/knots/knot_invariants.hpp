@@ -1,0 +1,51 @@
+// Invariants of a knot or link diagram through Regina: Reidemeister simplification first, then the
+// HOMFLY-PT, Jones and Alexander polynomials, the determinant and a crossing-number bound.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "knots/knot_diagram.hpp"
+#include "knots/polynomial.hpp"
+
+namespace s4d {
+
+struct KnotInvariants {
+  int components = 0;
+  int diagram_crossings = 0;     // crossings of the diagram analysed
+  int simplified_crossings = 0;  // after Regina's simplification: crossing number <= this
+  bool simplified_alternating = false;  // a reduced alternating diagram has minimal crossings
+  int writhe = 0;                // of the diagram analysed (not a knot invariant)
+  std::vector<std::vector<int>> linking;  // components × components
+  Laurent2 homfly;               // HOMFLY-PT in (alpha, z): alpha P+ - alpha^-1 P- = z P0, P(O) = 1
+  Laurent1 jones;                // Jones polynomial in s = t^(1/2)
+  Laurent1 alexander;            // Conway-normalised Alexander polynomial, in s = t^(1/2)
+  std::int64_t determinant = 0;  // |Delta(-1)| = |V(-1)|
+  std::uint64_t fingerprint = 0;         // homfly_fingerprint(homfly)
+  std::uint64_t mirror_fingerprint = 0;  // the mirror image's
+  std::string simplified_pd;     // Regina's PD code of the simplified diagram ("" if 0 crossings)
+
+  // Text forms in t when the powers allow it ("-t^-4 + t^-3 + t^-1"), else in t^(1/2).
+  std::string jones_text() const;
+  std::string alexander_text() const;
+  std::string homfly_text() const;  // in a and z
+  bool homfly_symmetric() const { return homfly == homfly.mirror_alpha(); }
+};
+
+// Regina's own forms of the codes of a diagram (before simplification).
+struct ReginaCodes {
+  std::string gauss;           // Regina's classical Gauss code (knots)
+  std::string oriented_gauss;  // Regina's oriented Gauss code ("+>1 -<2 ..."), knots and links
+  std::string dt;              // Dowker-Thistlethwaite, numerical ("4 6 2"); knots only
+  std::string dt_alpha;        // Dowker-Thistlethwaite, alphabetical ("bca"); knots only
+};
+
+KnotInvariants compute_invariants(const KnotDiagram& diagram);
+ReginaCodes regina_codes(const KnotDiagram& diagram);
+
+// True when the diagram is provably the unknot: it simplifies to no crossings, or (when
+// `use_topology` and the invariants cannot decide) its complement is recognised as a solid torus
+// by Regina's normal-surface algorithm (slow, exact).
+bool is_unknot(const KnotDiagram& diagram, bool use_topology);
+
+}  // namespace s4d
