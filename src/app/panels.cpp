@@ -155,7 +155,9 @@ void Panels::scene_panel(GuiModel& model) {
     if (ImGui::SmallButton("x")) remove = static_cast<int>(i);
     ImGui::SameLine();
     ImGui::TextUnformatted(obj.name.c_str());
-    ImGui::TextDisabled("  %s", describe(obj).c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", describe(obj).c_str());
+    ImGui::PopStyleColor();
     ImGui::PopID();
   }
   if (remove >= 0) model.scene.objects.erase(model.scene.objects.begin() + remove);
