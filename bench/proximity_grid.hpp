@@ -1,0 +1,43 @@
+// The crumpled grid surface shared by the proximity benchmarks: an n × n grid of the unit square
+// displaced by a deterministic sum of sinusoids in every coordinate, so that folds come close.
+#pragma once
+#include <cmath>
+#include <vector>
+
+#include "proximity/mesh_proximity.hpp"
+
+namespace s4d::bench {
+
+// Vertex (i, j) at "time" phase; D = 3 keeps the first three coordinates of the R^4 surface.
+template <int D>
+std::vector<Vec<D>> crumpled_grid(int n, double phase) {
+  std::vector<Vec<D>> x;
+  x.reserve(static_cast<std::size_t>(n) * n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = double(i) / (n - 1), v = double(j) / (n - 1);
+      Vec4 p(u + 0.08 * std::sin(7.0 * v + 2.0 * u + phase),
+             v + 0.08 * std::sin(6.0 * u - 3.0 * v + 1.3 * phase),
+             0.25 * std::sin(9.0 * u + phase) * std::cos(8.0 * v) + 0.05 * std::sin(23.0 * u * v),
+             0.25 * std::cos(7.0 * u - 5.0 * v + 0.7 * phase) * std::sin(6.0 * v + u));
+      x.push_back(p.head<D>());
+    }
+  return x;
+}
+
+inline std::vector<Cell<3>> grid_triangles(int n) {
+  std::vector<Cell<3>> t;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j, b = a + 1, c = a + n, d = c + 1;
+      t.push_back({a, b, d});
+      t.push_back({a, d, c});
+    }
+  return t;
+}
+
+// Thickness for an n × n grid: half the grid spacing (scene units), so neighbouring rows are
+// outside it but folds that come close are inside.
+inline double grid_delta(int n) { return 0.5 / (n - 1); }
+
+}  // namespace s4d::bench

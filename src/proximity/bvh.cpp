@@ -1,0 +1,100 @@
+// Build and refit of the broad-phase BVH (traversals are templates in bvh.hpp).
+#include "proximity/bvh.hpp"
+
+#include <algorithm>
+
+namespace s4d {
+
+template <int D>
+void Bvh<D>::build(std::span<const Box<D>> boxes) {
+  nodes_.clear();
+  order_.resize(boxes.size());
+  prim_boxes_.clear();
+  if (boxes.empty()) {
+    built_size_ = 0;
+    return;
+  }
+  std::vector<Vec<D>> centres(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    order_[i] = static_cast<int>(i);
+    // A non-finite box gets a finite centre so the split stays well defined; `near` lets NaN
+    // boxes through, and the narrow phase (NaN distance) decides what that means.
+    const Vec<D> c = 0.5 * (boxes[i].lo + boxes[i].hi);
+    centres[i] = c.allFinite() ? c : Vec<D>::Zero();
+  }
+  nodes_.reserve(2 * (boxes.size() / kLeafSize + 1));
+  build_node(boxes, centres, 0, static_cast<int>(boxes.size()));
+  prim_boxes_.resize(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) prim_boxes_[k] = boxes[order_[k]];
+  built_size_ = total_half_perimeter();
+}
+
+template <int D>
+int Bvh<D>::build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centres, int begin,
+                       int end) {
+  const int index = static_cast<int>(nodes_.size());
+  nodes_.push_back({});
+  Box<D> box, cbox;
+  for (int i = begin; i < end; ++i) {
+    box.add(boxes[order_[i]]);
+    cbox.add(centres[order_[i]]);
+  }
+  nodes_[index].box = box;
+  nodes_[index].size = box.half_perimeter();
+  if (end - begin <= kLeafSize) {
+    nodes_[index].first = begin;
+    nodes_[index].count = end - begin;
+    return index;
+  }
+  int axis = 0;
+  const Vec<D> ext = cbox.hi - cbox.lo;
+  for (int k = 1; k < D; ++k)
+    if (ext[k] > ext[axis]) axis = k;
+  const int mid = begin + (end - begin) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](int a, int b) { return centres[a][axis] < centres[b][axis]; });
+  build_node(boxes, centres, begin, mid);  // left child lands at index + 1
+  const int right = build_node(boxes, centres, mid, end);
+  nodes_[index].first = right;
+  nodes_[index].count = 0;
+  return index;
+}
+
+template <int D>
+void Bvh<D>::refit(std::span<const Box<D>> boxes) {
+  if (boxes.size() != order_.size() || nodes_.empty()) {
+    build(boxes);
+    return;
+  }
+  for (int n = static_cast<int>(nodes_.size()) - 1; n >= 0; --n) {
+    Node& node = nodes_[n];
+    Box<D> b;
+    if (node.count > 0) {
+      for (int i = node.first; i < node.first + node.count; ++i) {
+        prim_boxes_[i] = boxes[order_[i]];
+        b.add(prim_boxes_[i]);
+      }
+    } else {
+      b = nodes_[n + 1].box;
+      b.add(nodes_[node.first].box);
+    }
+    node.box = b;
+    node.size = b.half_perimeter();
+  }
+  // A tree fitted to far-moved primitives overlaps itself more and more; rebuild it then.
+  const double size = total_half_perimeter();
+  if (!(size <= 1.5 * built_size_ + 1e-300)) build(boxes);
+}
+
+template <int D>
+double Bvh<D>::total_half_perimeter() const {
+  double s = 0;
+  for (const Node& n : nodes_) s += n.box.half_perimeter();
+  return s;
+}
+
+template class Bvh<2>;
+template class Bvh<3>;
+template class Bvh<4>;
+
+}  // namespace s4d

@@ -1,0 +1,166 @@
+// The finders: self-intersections of a surface in R^4, and the intersection curves of its 3D
+// shadow classified by 4D depth, on surfaces whose answers are known by construction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "proximity/self_intersections.hpp"
+#include "proximity/shadow_intersections.hpp"
+
+namespace s4d {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A flat n × n grid patch o + s·u + t·v, s, t in [-1, 1], appended to `m`.
+void add_patch(Surface<4>& m, const Vec4& o, const Vec4& u, const Vec4& v, int n) {
+  const int base = static_cast<int>(m.vertices.size());
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      m.vertices.push_back(o + (2.0 * i / n - 1) * u + (2.0 * j / n - 1) * v);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = base + i * (n + 1) + j, b = a + 1, c = a + (n + 1), d = c + 1;
+      m.triangles.push_back({a, b, d});
+      m.triangles.push_back({a, d, c});
+    }
+}
+
+// The Clifford torus (cos u, sin u, cos v, sin v)/sqrt 2: embedded in R^4.
+Surface<4> clifford_torus(int n) {
+  Surface<4> s;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = 2 * kPi * i / n, v = 2 * kPi * j / n;
+      s.vertices.push_back(Vec4(std::cos(u), std::sin(u), std::cos(v), std::sin(v)) / std::sqrt(2));
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * n + j, b = i * n + (j + 1) % n, c = ((i + 1) % n) * n + j,
+                d = ((i + 1) % n) * n + (j + 1) % n;
+      s.triangles.push_back({a, b, d});
+      s.triangles.push_back({a, d, c});
+    }
+  return s;
+}
+
+Frame<4> generic_frame() {
+  Frame<4> f;
+  f.rotate({0, 3}, 0.5);
+  f.rotate({1, 2}, 0.3);
+  f.rotate({1, 3}, 0.7);
+  f.rotate({0, 2}, 0.2);
+  return f;
+}
+
+// Two patches in complementary planes (xy and zw) crossing at the single point `at`.
+Surface<4> crossing_patches(const Vec4& at) {
+  Surface<4> s;
+  add_patch(s, Vec4(at.x(), at.y(), 0, 0) + Vec4(0.013, -0.021, 0, 0), Vec4(1, 0, 0, 0),
+            Vec4(0, 1, 0, 0), 8);
+  add_patch(s, Vec4(0, 0, at.z(), at.w()) + Vec4(0, 0, 0.017, 0.011), Vec4(0, 0, 1, 0),
+            Vec4(0, 0, 0, 1), 8);
+  return s;
+}
+
+TEST(SelfIntersections, EmbeddedCliffordTorusHasNone) {
+  const auto r = self_intersections(clifford_torus(32));
+  EXPECT_TRUE(r.pairs.empty());
+  EXPECT_TRUE(r.points.empty());
+}
+
+TEST(SelfIntersections, ComplementaryPlanesMeetInExactlyOnePoint) {
+  const Surface<4> s = crossing_patches(Vec4::Zero());
+  const auto r = self_intersections(s);
+  ASSERT_EQ(r.points.size(), 1u);
+  EXPECT_GE(r.pairs.size(), 1u);
+  // The planes z = w = 0 and x = y = 0 meet at the origin (the patches' offsets lie in their
+  // own planes and only keep the crossing away from vertices and edges).
+  EXPECT_NEAR(r.points[0].norm(), 0.0, 1e-12);
+  // The two planes span R^4, so shifting one patch (its first 81 vertices) by a small vector
+  // keeps exactly one crossing; a shift in z and w moves it by that much.
+  Surface<4> moved = s;
+  for (int i = 0; i < 81; ++i) moved.vertices[i] += Vec4(0, 0, 0.1, -0.2);
+  const auto r2 = self_intersections(moved);
+  ASSERT_EQ(r2.points.size(), 1u);
+  EXPECT_NEAR((r2.points[0] - Vec4(0, 0, 0.1, -0.2)).norm(), 0.0, 1e-12);
+}
+
+TEST(SelfIntersections, BetweenTwoSurfaces) {
+  Surface<4> a, b;
+  add_patch(a, Vec4(0.01, 0.02, 0, 0), Vec4(1, 0, 0, 0), Vec4(0, 1, 0, 0), 6);
+  add_patch(b, Vec4(0, 0, 0.03, 0.04), Vec4(0, 0, 1, 0), Vec4(0, 0, 0, 1), 6);
+  const auto r = surface_intersections(a, b);
+  ASSERT_EQ(r.points.size(), 1u);
+  EXPECT_NEAR(r.points[0].norm(), 0.0, 1e-12);
+  for (auto& v : b.vertices) v += Vec4(3, 0, 0, 0);  // now far apart
+  EXPECT_TRUE(surface_intersections(a, b).points.empty());
+}
+
+TEST(ShadowIntersections, TrueCrossingIsFoundWhereTheDepthsAgree) {
+  const Surface<4> s = crossing_patches(Vec4::Zero());
+  const Frame<4> f = generic_frame();
+  const ShadowIntersections r = shadow_intersections(s, f);
+  // Two planar pieces in general position in the shadow meet along one straight curve.
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_FALSE(r.curves[0].closed);
+  EXPECT_EQ(r.true_curves, 1);
+  EXPECT_EQ(r.shadow_only_curves, 0);
+  EXPECT_GT(r.total_length, 0.5);
+  // Exactly one segment changes depth order, at the shadow of the 4D crossing point (or two,
+  // if that point falls on a shared end).
+  int meets = 0;
+  for (const auto& seg : r.segments)
+    if (seg.true_intersection) {
+      ++meets;
+      EXPECT_NEAR((seg.meet - f.shadow(Vec4::Zero())).norm(), 0.0, 1e-9);
+    }
+  EXPECT_GE(meets, 1);
+  EXPECT_LE(meets, 2);
+  // The segments are straight pieces of one line: their lengths add up to its end-to-end length.
+  Vec3 lo = r.segments[0].p0, hi = lo;
+  const Vec3 dir = (r.segments[0].p1 - r.segments[0].p0).normalized();
+  double tmin = 0, tmax = 0;
+  for (const auto& seg : r.segments)
+    for (const Vec3& p : {seg.p0, seg.p1}) {
+      EXPECT_NEAR((p - lo - (p - lo).dot(dir) * dir).norm(), 0.0, 1e-9);
+      tmin = std::min(tmin, (p - lo).dot(dir));
+      tmax = std::max(tmax, (p - lo).dot(dir));
+    }
+  (void)hi;
+  EXPECT_NEAR(r.total_length, tmax - tmin, 1e-9);
+}
+
+TEST(ShadowIntersections, SameShadowApartInDepthIsShadowOnly) {
+  const Frame<4> f = generic_frame();
+  Surface<4> s = crossing_patches(Vec4::Zero());
+  const ShadowIntersections before = shadow_intersections(s, f);
+  // Push the second patch far along the viewing (depth) axis: the same shadow, and the depth
+  // difference (which varies by less than 5 across the patches) never vanishes: no 4D meeting.
+  for (std::size_t i = 81; i < s.vertices.size(); ++i) s.vertices[i] += 5.0 * f.axis(3);
+  const ShadowIntersections after = shadow_intersections(s, f);
+  EXPECT_EQ(after.curves.size(), before.curves.size());
+  EXPECT_NEAR(after.total_length, before.total_length, 1e-9);
+  EXPECT_EQ(after.true_curves, 0);
+  EXPECT_EQ(after.shadow_only_curves, 1);
+  EXPECT_TRUE(self_intersections(s).points.empty());
+  for (const auto& seg : after.segments) {  // sheet b is behind sheet a all along
+    EXPECT_GT(seg.depth_b0 - seg.depth_a0, 0.5);
+    EXPECT_GT(seg.depth_b1 - seg.depth_a1, 0.5);
+  }
+}
+
+TEST(ShadowIntersections, CliffordTorusShadowCrossesItselfOnlyInTheShadow) {
+  const Surface<4> t = clifford_torus(40);
+  const ShadowIntersections r = shadow_intersections(t, generic_frame());
+  EXPECT_GT(r.segments.size(), 0u);
+  EXPECT_GT(r.total_length, 0.1);
+  EXPECT_EQ(r.true_curves, 0);
+  EXPECT_EQ(r.shadow_only_curves, static_cast<int>(r.curves.size()));
+  double sum = 0;
+  for (const auto& c : r.curves) sum += c.length;
+  EXPECT_NEAR(sum, r.total_length, 1e-12);
+}
+
+}  // namespace
+}  // namespace s4d

@@ -1,0 +1,167 @@
+// Broad phase (BVH) + narrow phase over meshes and curves equal the all-pairs brute force.
+#include "proximity/mesh_proximity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/error.hpp"
+#include "proximity/reference.hpp"
+
+namespace s4d {
+namespace {
+
+using test::random_vec;
+
+// A random mesh: vertices in a cube, cells made of a vertex and K-1 of its near neighbours (so
+// cells share vertices as in a real mesh), plus a few random long cells.
+template <int D, int K>
+std::pair<std::vector<Vec<D>>, std::vector<Cell<K>>> random_mesh(std::mt19937& rng, int nv,
+                                                                  int nc) {
+  std::vector<Vec<D>> x(nv);
+  for (auto& v : x) v = random_vec<D>(rng);
+  std::uniform_int_distribution<int> pick(0, nv - 1);
+  std::vector<Cell<K>> cells;
+  while (static_cast<int>(cells.size()) < nc) {
+    Cell<K> c;
+    c[0] = pick(rng);
+    for (int k = 1; k < K; ++k) {
+      // nearest of a few random candidates, so cells are small and neighbours share vertices
+      int best = pick(rng);
+      for (int tries = 0; tries < 6; ++tries) {
+        const int v = pick(rng);
+        if ((x[v] - x[c[0]]).norm() < (x[best] - x[c[0]]).norm()) best = v;
+      }
+      c[k] = best;
+    }
+    bool ok = true;
+    for (int i = 0; i < K; ++i)
+      for (int j = i + 1; j < K; ++j) ok = ok && c[i] != c[j];
+    if (ok) cells.push_back(c);
+  }
+  return {x, cells};
+}
+
+template <int D, int K>
+void check_self(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto [x, cells] = random_mesh<D, K>(rng, 160, 260);
+  SelfProximity<D, K> q(cells);
+  std::vector<ProximityPair<D>> got;
+  for (int round = 0; round < 3; ++round) {  // moving vertices: exercises refit (and rebuild)
+    const double delta = 0.05 + 0.05 * round;
+    q.pairs_within(x, delta, got);
+    std::vector<std::pair<int, int>> want;
+    for (int a = 0; a < static_cast<int>(cells.size()); ++a)
+      for (int b = a + 1; b < static_cast<int>(cells.size()); ++b) {
+        if (share_vertex<K, K>(cells[a], cells[b])) continue;
+        Simplex<D, K> sa, sb;
+        for (int i = 0; i < K; ++i) sa[i] = x[cells[a][i]], sb[i] = x[cells[b][i]];
+        if (closest_points<D, K, K>(sa, sb).distance <= delta) want.push_back({a, b});
+      }
+    ASSERT_EQ(got.size(), want.size()) << "D=" << D << " K=" << K << " round " << round;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      EXPECT_EQ(got[i].a, want[i].first);
+      EXPECT_EQ(got[i].b, want[i].second);
+    }
+    EXPECT_GT(want.size(), 0u);
+    for (auto& v : x) v += random_vec<D>(rng, 0.1 * (round + 1));
+  }
+  // Earliest impact over a step equals the minimum over all pairs.
+  std::vector<Vec<D>> x1 = x;
+  for (auto& v : x1) v += random_vec<D>(rng, 0.15);
+  CcdOptions opt;
+  opt.thickness = 0.01;
+  const Impact<D> got_i = q.earliest_impact(x, x1, opt);
+  double best = 2;
+  for (int a = 0; a < static_cast<int>(cells.size()); ++a)
+    for (int b = a + 1; b < static_cast<int>(cells.size()); ++b) {
+      if (share_vertex<K, K>(cells[a], cells[b])) continue;
+      Simplex<D, K> a0, a1, b0, b1;
+      for (int i = 0; i < K; ++i) {
+        a0[i] = x[cells[a][i]], a1[i] = x1[cells[a][i]];
+        b0[i] = x[cells[b][i]], b1[i] = x1[cells[b][i]];
+      }
+      const auto r = earliest_contact<D, K, K>(a0, a1, b0, b1, opt);
+      if (r.hit) best = std::min(best, r.t);
+    }
+  ASSERT_EQ(got_i.hit, best <= 1);
+  if (got_i.hit) EXPECT_DOUBLE_EQ(got_i.t, best);
+}
+
+template <int D, int KA, int KB>
+void check_pair(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto [xa, ca] = random_mesh<D, KA>(rng, 120, 150);
+  auto [xb, cb] = random_mesh<D, KB>(rng, 120, 150);
+  PairProximity<D, KA, KB> q(ca, cb);
+  std::vector<ProximityPair<D>> got;
+  q.pairs_within(xa, xb, 0.06, got);
+  std::vector<std::pair<int, int>> want;
+  for (int a = 0; a < static_cast<int>(ca.size()); ++a)
+    for (int b = 0; b < static_cast<int>(cb.size()); ++b) {
+      Simplex<D, KA> sa;
+      Simplex<D, KB> sb;
+      for (int i = 0; i < KA; ++i) sa[i] = xa[ca[a][i]];
+      for (int i = 0; i < KB; ++i) sb[i] = xb[cb[b][i]];
+      if (closest_points<D, KA, KB>(sa, sb).distance <= 0.06) want.push_back({a, b});
+    }
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i)
+    EXPECT_EQ(std::make_pair(got[i].a, got[i].b), want[i]);
+  EXPECT_GT(want.size(), 0u);
+}
+
+TEST(MeshProximity, SelfQueriesEqualBruteForceInR2) {
+  check_self<2, 2>(1);
+  check_self<2, 3>(2);
+}
+TEST(MeshProximity, SelfQueriesEqualBruteForceInR3) {
+  check_self<3, 2>(3);
+  check_self<3, 3>(4);
+}
+TEST(MeshProximity, SelfQueriesEqualBruteForceInR4) {
+  check_self<4, 2>(5);
+  check_self<4, 3>(6);
+}
+TEST(MeshProximity, PairQueriesEqualBruteForce) {
+  check_pair<3, 3, 3>(7);
+  check_pair<4, 3, 3>(8);
+  check_pair<4, 2, 3>(9);
+  check_pair<4, 3, 2>(10);
+  check_pair<2, 2, 2>(11);
+}
+
+TEST(MeshProximity, BvhSelfPairsEqualAllOverlappingBoxes) {
+  std::mt19937 rng(12);
+  for (int n : {0, 1, 3, 4, 5, 17, 300}) {
+    std::vector<Box<4>> boxes(n);
+    for (auto& b : boxes) {
+      const Vec4 c = random_vec<4>(rng);
+      b.add(c);
+      b.add(c + random_vec<4>(rng, 0.2));
+    }
+    Bvh<4> bvh;
+    bvh.build(boxes);
+    std::set<std::pair<int, int>> got;
+    bvh.self_pairs(0.01, [&](int i, int j) {
+      EXPECT_TRUE(got.insert({std::min(i, j), std::max(i, j)}).second) << "pair reported twice";
+    });
+    std::set<std::pair<int, int>> want;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (boxes[i].near(boxes[j], 0.01)) want.insert({i, j});
+    EXPECT_EQ(got, want) << n << " boxes";
+  }
+}
+
+TEST(MeshProximity, BadInputIsAClearError) {
+  EXPECT_THROW((SelfProximity<3, 3>({{0, 1, -2}})), Error);
+  SelfProximity<3, 3> q({{0, 1, 5}});
+  std::vector<Vec3> x(3, Vec3::Zero());
+  std::vector<ProximityPair<3>> out;
+  EXPECT_THROW(q.pairs_within(x, 0.1, out), Error);
+}
+
+}  // namespace
+}  // namespace s4d
