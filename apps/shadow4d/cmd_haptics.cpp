@@ -1,0 +1,210 @@
+// `shadow4d haptics`: runs the haptic loop headless with a device (sim, mouse, replay, spacenav,
+// openhaptics) on the sticky plane or a 4D cloth, optionally recording, and prints its statistics.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "command.hpp"
+#include "core/error.hpp"
+#include "haptics/device_spec.hpp"
+#include "haptics/haptic_loop.hpp"
+#include "haptics/haptic_session.hpp"
+#include "haptics/replay_device.hpp"
+#include "haptics/rubber_band_scene.hpp"
+#include "haptics/simulated_arm.hpp"
+
+namespace s4d::cli {
+namespace {
+
+struct HapticsArgs {
+  std::string device = "sim";
+  double seconds = 5;
+  double rate = 1000;
+  std::string record;
+  bool json = false;
+  SceneChoice scene;
+  bool no_collisions = false;
+  bool no_realtime = false;
+};
+
+nlohmann::json summary_json(const PeriodSummary& p) {
+  return {{"ticks", p.ticks},       {"nominal_us", p.nominal_us}, {"p50_us", p.p50_us},
+          {"p99_us", p.p99_us},     {"p999_us", p.p999_us},       {"max_us", p.max_us},
+          {"mean_us", p.mean_us},   {"missed", p.missed},         {"over_2ms", p.over_2ms},
+          {"worst_lateness_us", p.worst_lateness_us}};
+}
+
+// Where the scripted hand starts: on the plane, or on the cloth vertex in the middle of its lower half.
+Vec3 scripted_start(HapticScene& scene, int& vertex) {
+  vertex = -1;
+  if (auto* band = dynamic_cast<RubberBandScene*>(&scene)) {
+    band->set_param(RubberBandScene::kHold, 1);
+    const int n = static_cast<int>(std::lround(std::sqrt(band->simulation().vertex_count())));
+    vertex = (n / 2) * n + n / 4;
+    return band->simulation().shadow_position(vertex);
+  }
+  return Vec3(0.02, 0, 0);
+}
+
+// The scene construction a replay needs beyond the parameters: "cloth_n=64 collisions=1".
+std::string format_setup(const SceneChoice& c) {
+  return "cloth_n=" + std::to_string(c.cloth_n) + " collisions=" + (c.collisions ? "1" : "0") +
+         " async=" + (c.async_physics ? "1" : "0");
+}
+
+void parse_setup(const std::string& setup, SceneChoice& c) {
+  std::istringstream in(setup);
+  std::string item;
+  while (in >> item) {
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    try {
+      if (key == "cloth_n") c.cloth_n = std::stoi(value);
+      else if (key == "collisions") c.collisions = value != "0";
+      else if (key == "async") c.async_physics = value != "0";  // only reported: replays run synchronously
+    } catch (const std::exception&) {
+      throw Error("replay: bad setup item '" + item + "' in the recording");
+    }
+  }
+}
+
+void run(const HapticsArgs& a) {
+  const DeviceSpec spec = parse_device_spec(a.device);
+  std::unique_ptr<Device> device = make_device(spec);
+  SceneChoice choice = a.scene;
+  choice.collisions = !a.no_collisions;  // (a replay takes these from its recording)
+  HapticLoopConfig cfg;
+  cfg.rate_hz = a.rate;
+  cfg.realtime_priority = !a.no_realtime;
+  auto* replay = dynamic_cast<ReplayDevice*>(device.get());
+  std::uint64_t replay_ticks = 0;
+  bool recorded_async = false;  // the recording's cloth ran on its own thread: forces cannot match
+  if (replay) {  // rebuild what was recorded: rate, scene, parameters
+    const TrajectoryHeader& h = replay->trajectory().header;
+    cfg.rate_hz = h.rate;
+    choice.name = h.scene == "generated" ? "plane" : h.scene;
+    parse_setup(replay->trajectory().header.setup, choice);
+    recorded_async = choice.async_physics;
+    choice.async_physics = false;  // replays must be deterministic
+    replay_ticks = replay->trajectory().ticks.size();
+  }
+  if (!(a.seconds > 0) || a.seconds > 24 * 3600) throw Error("--seconds must be in (0, 86400]");
+  std::unique_ptr<HapticScene> scene = make_haptic_scene(choice);
+  if (replay)
+    for (const auto& [name, value] : replay->trajectory().header.params) {
+      const int i = scene->find_param(name);
+      if (i < 0) throw Error("replay: the recording sets parameter '" + name + "' unknown to scene " + choice.name);
+      scene->set_param(i, value);
+    }
+  int vertex = -1;
+  const Vec3 start = scripted_start(*scene, vertex);
+  const double press = vertex >= 0 ? 0.0 : 0.003;
+  if (auto* arm = dynamic_cast<SimulatedArm*>(device.get())) {
+    arm->set_position(start);
+    arm->set_hand_script([start, press](double t) { return demo_hand_path(t, start, press); });
+  }
+  const std::string scene_name(scene->name());
+  HapticLoop loop(std::move(device), std::move(scene), cfg);
+  if (!a.record.empty()) loop.record_to(a.record, format_setup(choice));
+
+  const auto t0 = std::chrono::steady_clock::now();
+  if (replay) {
+    // Deterministic: every recorded tick through the same tick function, as fast as it goes.
+    loop.run_ticks(replay_ticks);
+  } else {
+    loop.start();
+    const bool drive_pointer = spec.kind == DeviceSpec::Kind::mouse;
+    const auto end = t0 + std::chrono::duration<double>(a.seconds);
+    while (std::chrono::steady_clock::now() < end) {
+      if (drive_pointer) {  // a headless "user" moving the cursor, as the GUI would
+        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        loop.set_pointer(demo_hand_path(t, start, press), vertex >= 0 ? 1u : 0u);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    loop.stop();
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  loop.finish_recording();
+  const HapticSnapshot& s = loop.snapshot();
+
+  if (a.json) {
+    nlohmann::json j = {{"device", to_string(spec)},
+                        {"scene", scene_name},
+                        {"rate_hz", cfg.rate_hz},
+                        {"wall_seconds", wall},
+                        {"ticks", loop.ticks()},
+                        {"realtime_priority", s.realtime},
+                        {"device_connected", s.device_connected},
+                        {"max_force_n", s.max_force_output},
+                        {"safety",
+                         {{"phase", safety_phase_name(s.safety_phase)},
+                          {"clamped", s.safety.clamped},
+                          {"rate_limited", s.safety.rate_limited},
+                          {"nonfinite", s.safety.nonfinite},
+                          {"disarms", s.safety.disarms}}}};
+    if (!replay) {
+      j["period"] = summary_json(s.period);
+      j["work"] = summary_json(s.work);
+    }
+    if (!a.record.empty()) j["recorded"] = {{"file", a.record}, {"ticks", loop.ticks()}};
+    if (replay)
+      j["replay"] = {{"compared", replay->compared()},
+                     {"mismatches", replay->mismatches()},
+                     {"recorded_async_physics", recorded_async}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::printf("haptics: device %s, scene %s, %.0f Hz, %llu ticks in %.2f s (real-time priority: %s)\n",
+                to_string(spec).c_str(), scene_name.c_str(), cfg.rate_hz,
+                static_cast<unsigned long long>(loop.ticks()), wall, s.realtime ? "yes" : "no");
+    if (!replay) {
+      const PeriodSummary& p = s.period;
+      std::printf("  period: p50 %.1f us, p99 %.1f us, p99.9 %.1f us, max %.1f us, mean %.1f us\n", p.p50_us,
+                  p.p99_us, p.p999_us, p.max_us, p.mean_us);
+      std::printf("  missed deadlines %llu, periods over 2 ms %llu, worst wake-up lateness %.1f us\n",
+                  static_cast<unsigned long long>(p.missed), static_cast<unsigned long long>(p.over_2ms),
+                  p.worst_lateness_us);
+      std::printf("  tick work: p50 %.1f us, p99 %.1f us, max %.1f us\n", s.work.p50_us, s.work.p99_us,
+                  s.work.max_us);
+    }
+    std::printf("  force: max %.3f N; safety %s (clamped %llu, rate-limited %llu, non-finite %llu)\n",
+                s.max_force_output, safety_phase_name(s.safety_phase),
+                static_cast<unsigned long long>(s.safety.clamped),
+                static_cast<unsigned long long>(s.safety.rate_limited),
+                static_cast<unsigned long long>(s.safety.nonfinite));
+    if (!a.record.empty())
+      std::printf("  recorded %llu ticks to %s\n", static_cast<unsigned long long>(loop.ticks()), a.record.c_str());
+    if (replay)
+      std::printf("  replay: %llu forces compared with the recording, %llu differ%s\n",
+                  static_cast<unsigned long long>(replay->compared()),
+                  static_cast<unsigned long long>(replay->mismatches()),
+                  replay->mismatches() ? "" : " (bit-identical)");
+    if (replay && recorded_async)
+      std::printf("  (recorded with --async-physics: the simulation's timing was not recorded, forces may differ)\n");
+  }
+  if (replay && replay->mismatches() > 0 && !recorded_async) throw ExitStatus{2};
+}
+
+const CommandRegistrar kHaptics(
+    "haptics", "run the haptic loop headless with a device and print its period statistics",
+    [](CLI::App& sub) {
+      auto a = std::make_shared<HapticsArgs>();
+      sub.add_option("--device", a->device, kDeviceSpecHelp)->capture_default_str();
+      sub.add_option("--seconds", a->seconds, "how long to run (live devices)")->capture_default_str();
+      sub.add_option("--rate", a->rate, "servo rate, Hz")->capture_default_str();
+      sub.add_option("--record", a->record, "record the device stream and forces to this file");
+      sub.add_flag("--json", a->json, "print the statistics as JSON");
+      sub.add_option("--scene", a->scene.name, kSceneChoiceHelp)->capture_default_str();
+      sub.add_option("--cloth-n", a->scene.cloth_n, "vertices per side of the 4D cloth")->capture_default_str();
+      sub.add_flag("--no-collisions", a->no_collisions, "cloth without collision avoidance");
+      sub.add_flag("--async-physics", a->scene.async_physics,
+                   "step the cloth on its own thread so a slow simulation cannot stall the loop");
+      sub.add_flag("--no-realtime", a->no_realtime, "do not ask for SCHED_FIFO");
+      sub.callback([a] { run(*a); });
+    });
+
+}  // namespace
+}  // namespace s4d::cli
