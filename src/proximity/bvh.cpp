@@ -10,6 +10,7 @@ void Bvh<D>::build(std::span<const Box<D>> boxes) {
   nodes_.clear();
   order_.resize(boxes.size());
   prim_boxes_.clear();
+  prim_f_.clear();
   if (boxes.empty()) {
     built_size_ = 0;
     return;
@@ -25,27 +26,28 @@ void Bvh<D>::build(std::span<const Box<D>> boxes) {
   nodes_.reserve(2 * (boxes.size() / kLeafSize + 1));
   build_node(boxes, centres, 0, static_cast<int>(boxes.size()));
   prim_boxes_.resize(boxes.size());
-  for (std::size_t k = 0; k < boxes.size(); ++k) prim_boxes_[k] = boxes[order_[k]];
+  prim_f_.resize(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    prim_boxes_[k] = boxes[order_[k]];
+    prim_f_[k] = FloatBox::outward<D>(prim_boxes_[k]);
+  }
+  fit_nodes();
   built_size_ = total_half_perimeter();
 }
 
+// Topology only: median split on the widest axis of the centres; boxes come from fit_nodes().
 template <int D>
 int Bvh<D>::build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centres, int begin,
                        int end) {
   const int index = static_cast<int>(nodes_.size());
   nodes_.push_back({});
-  Box<D> box, cbox;
-  for (int i = begin; i < end; ++i) {
-    box.add(boxes[order_[i]]);
-    cbox.add(centres[order_[i]]);
-  }
-  nodes_[index].box = box;
-  nodes_[index].size = box.half_perimeter();
   if (end - begin <= kLeafSize) {
     nodes_[index].first = begin;
     nodes_[index].count = end - begin;
     return index;
   }
+  Box<D> cbox;
+  for (int i = begin; i < end; ++i) cbox.add(centres[order_[i]]);
   int axis = 0;
   const Vec<D> ext = cbox.hi - cbox.lo;
   for (int k = 1; k < D; ++k)
@@ -61,26 +63,32 @@ int Bvh<D>::build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centr
 }
 
 template <int D>
-void Bvh<D>::refit(std::span<const Box<D>> boxes) {
-  if (boxes.size() != order_.size() || nodes_.empty()) {
-    build(boxes);
-    return;
-  }
+void Bvh<D>::fit_nodes() {
   for (int n = static_cast<int>(nodes_.size()) - 1; n >= 0; --n) {
     Node& node = nodes_[n];
-    Box<D> b;
+    FloatBox b = prim_f_[node.count > 0 ? node.first : 0];
     if (node.count > 0) {
-      for (int i = node.first; i < node.first + node.count; ++i) {
-        prim_boxes_[i] = boxes[order_[i]];
-        b.add(prim_boxes_[i]);
-      }
+      for (int i = node.first + 1; i < node.first + node.count; ++i) b.add(prim_f_[i]);
     } else {
       b = nodes_[n + 1].box;
       b.add(nodes_[node.first].box);
     }
     node.box = b;
-    node.size = b.half_perimeter();
+    node.size = b.half_perimeter(D);
   }
+}
+
+template <int D>
+void Bvh<D>::refit(std::span<const Box<D>> boxes) {
+  if (boxes.size() != order_.size() || nodes_.empty()) {
+    build(boxes);
+    return;
+  }
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    prim_boxes_[k] = boxes[order_[k]];
+    prim_f_[k] = FloatBox::outward<D>(prim_boxes_[k]);
+  }
+  fit_nodes();
   // A tree fitted to far-moved primitives overlaps itself more and more; rebuild it then.
   const double size = total_half_perimeter();
   if (!(size <= 1.5 * built_size_ + 1e-300)) build(boxes);
@@ -89,7 +97,7 @@ void Bvh<D>::refit(std::span<const Box<D>> boxes) {
 template <int D>
 double Bvh<D>::total_half_perimeter() const {
   double s = 0;
-  for (const Node& n : nodes_) s += n.box.half_perimeter();
+  for (const Node& n : nodes_) s += n.size;
   return s;
 }
 

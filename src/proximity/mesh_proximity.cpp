@@ -1,11 +1,12 @@
-// Whole-mesh proximity and continuous collision: BVH candidates, cheap separating-direction
-// rejection, then the exact kernels of closest_points.hpp / continuous_collision.hpp.
+// Whole-mesh proximity and continuous collision: BVH candidates, cheap separating-axis rejection
+// (separating_axes.hpp), then the exact kernels of closest_points.hpp / continuous_collision.hpp.
 #include "proximity/mesh_proximity.hpp"
 
 #include <algorithm>
 #include <string>
 
 #include "core/error.hpp"
+#include "proximity/separating_axes.hpp"
 
 namespace s4d {
 
@@ -60,27 +61,10 @@ void swept_boxes(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
   }
 }
 
-// A lower bound on the distance of two simplices: their gap along the line joining their
-// centroids (projection onto a line never increases distances). Costs K_A + K_B dot products and
-// rejects almost every neighbour pair the boxes let through.
-template <int D, int KA, int KB>
-double separation_lower_bound(const Simplex<D, KA>& a, const Simplex<D, KB>& b) {
-  Vec<D> ca = a[0], cb = b[0];
-  for (int i = 1; i < KA; ++i) ca += a[i];
-  for (int j = 1; j < KB; ++j) cb += b[j];
-  const Vec<D> n = cb / KB - ca / KA;
-  const double len = n.norm();
-  if (!(len > 0)) return 0;
-  double max_a = a[0].dot(n), min_b = b[0].dot(n);
-  for (int i = 1; i < KA; ++i) max_a = std::max(max_a, a[i].dot(n));
-  for (int j = 1; j < KB; ++j) min_b = std::min(min_b, b[j].dot(n));
-  return (min_b - max_a) / len;
-}
-
 template <int D, int KA, int KB>
 void narrow_within(const Simplex<D, KA>& sa, const Simplex<D, KB>& sb, int a, int b, double delta,
                    std::vector<ProximityPair<D>>& out) {
-  if (separation_lower_bound<D, KA, KB>(sa, sb) > delta) return;
+  if (provably_farther<D, KA, KB>(sa, sb, delta)) return;
   const ClosestPoints<D> cp = closest_points<D, KA, KB>(sa, sb);
   if (cp.distance <= delta) out.push_back({a, b, cp});
 }
@@ -90,9 +74,8 @@ template <int D, int KA, int KB>
 void narrow_impact(const Simplex<D, KA>& a0, const Simplex<D, KA>& a1, const Simplex<D, KB>& b0,
                    const Simplex<D, KB>& b1, int a, int b, const CcdOptions& opt, Impact<D>& best) {
   const double t_max = best.hit ? best.t : opt.t_max;
-  const double speed = relative_speed_bound<D, KA, KB>(a0, a1, b0, b1);
-  // Cheap exclusion: separated at t = 0 by more than the motion can close before t_max.
-  if (separation_lower_bound<D, KA, KB>(a0, b0) - speed * t_max > opt.thickness) return;
+  // Cheap exclusion: the swept vertex sets stay apart along some axis over [0, t_max].
+  if (provably_apart_over_step<D, KA, KB>(a0, a1, b0, b1, t_max, opt.thickness)) return;
   CcdOptions o = opt;
   o.t_max = t_max;
   ++best.narrow_tests;
