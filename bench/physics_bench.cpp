@@ -1,0 +1,208 @@
+// Physics step costs (issue 5): a crumpled 4D cloth with self-collision at 64² and 128², the spun
+// trefoil at scenario resolution, and the peer comparison with Bullet's btSoftBody on the same 3D
+// cloth (steps per second and pass-throughs left, side by side).
+#include <benchmark/benchmark.h>
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletSoftBody/btSoftBodyHelpers.h>
+#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
+
+#include <chrono>
+#include <memory>
+
+#include "physics/world.hpp"
+#include "proximity/mesh_proximity.hpp"
+#include "shape/generators.hpp"
+#include "shape/grid_mesh.hpp"
+
+namespace s4d {
+namespace {
+
+template <int D>
+Surface<D> flat_cloth(int n, double size) {
+  Surface<D> s;
+  s.grid = Grid{n, n, false, false};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      Vec<D> p = Vec<D>::Zero();
+      p[0] = size * (static_cast<double>(i) / (n - 1) - 0.5);
+      p[2] = size * (static_cast<double>(j) / (n - 1) - 0.5);  // horizontal: x-z plane, y up
+      s.vertices.push_back(p);
+    }
+  s.triangles = grid_triangles(*s.grid);
+  return s;
+}
+
+template <int D>
+PhysicsParams<D> cloth_params(int n) {
+  PhysicsParams<D> p;
+  p.gravity[1] = -9.81;
+  p.thickness = 0.4 / (n - 1);  // δ: 40 % of the grid step
+  p.stiffness = 200;
+  p.friction = 0.3;
+  return p;
+}
+
+// Corners (0,0) and (0,n-1) pinned and carried towards each other, (n-1,·) corners free: the
+// cloth falls, folds and crumples against itself. In 4D the pinned corners also move in w.
+template <int D>
+void drive_corners(World<D>& w, int n, double t) {
+  const double u = std::min(1.0, t / 0.6);
+  Vec<D> a = w.model().initial[0], b = w.model().initial[n - 1];
+  a[2] += 0.35 * u;
+  b[2] -= 0.35 * u;
+  if constexpr (D == 4) {
+    a[3] += 0.1 * u;
+    b[3] -= 0.1 * u;
+  }
+  w.set_target(0, a);
+  w.set_target(n - 1, b);
+}
+
+template <int D>
+std::unique_ptr<World<D>> crumpled_cloth(int n, int settle_steps) {
+  ModelBuilder<D> b(cloth_params<D>(n));
+  b.add_body(flat_cloth<D>(n, 1.0));
+  auto w = std::make_unique<World<D>>(b.build());
+  w->pin(0);
+  w->pin(n - 1);
+  for (int s = 0; s < settle_steps; ++s) {
+    drive_corners(*w, n, w->data().time);
+    w->step();
+  }
+  return w;
+}
+
+template <int D>
+int pass_throughs(std::span<const Vec<D>> x, const std::vector<Triangle>& tris) {
+  std::vector<Cell<3>> cells(tris.begin(), tris.end());
+  return static_cast<int>(intersecting_pairs<D, 3>(x, cells, 1e-9).size());
+}
+
+void BM_Cloth4DCrumpledStep(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  auto w = crumpled_cloth<4>(n, 600);
+  for (auto _ : state) {
+    drive_corners(*w, n, w->data().time);
+    w->step();
+  }
+  state.counters["vertices"] = n * n;
+  state.counters["contacts"] = w->data().last_contacts;
+  state.counters["substeps"] = w->data().last_substeps;
+  state.counters["ccd_freezes"] = static_cast<double>(w->data().warnings.ccd_freezes);
+  state.counters["pass_throughs"] = pass_throughs<4>(w->positions(), w->model().triangles);
+}
+BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+void BM_SpunTrefoilStep(benchmark::State& state) {
+  const Shape s = generate("spun-trefoil", {{"n", 64}, {"m", 12}});
+  PhysicsParams<4> p;
+  p.thickness = 0.03;
+  p.stiffness = 300;
+  ModelBuilder<4> b(p);
+  b.add_body(std::get<Surface<4>>(s));
+  World<4> w(b.build());
+  const int last = w.vertex_count() - 1;
+  w.set_external_force(0, Vec4(-2, 0, 0, 0));
+  w.set_external_force(last, Vec4(2, 0, 0, 0));
+  for (int i = 0; i < 500; ++i) w.step();  // pulled, mid-deformation
+  for (auto _ : state) w.step();
+  state.counters["vertices"] = w.vertex_count();
+  state.counters["contacts"] = w.data().last_contacts;
+}
+BENCHMARK(BM_SpunTrefoilStep)->Unit(benchmark::kMillisecond);
+
+// [SECTION] Peer: the same 3D cloth, grid springs, self-collision on, 1000 steps of 1 ms.
+constexpr int kPeerSteps = 1000;
+
+void BM_Peer3DCloth_s4d(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  int bad = 0;
+  double steps_per_s = 0;
+  for (auto _ : state) {
+    ModelBuilder<3> b(cloth_params<3>(n));
+    b.add_body(flat_cloth<3>(n, 1.0));
+    World<3> w(b.build());
+    w.pin(0);
+    w.pin(n - 1);
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 0; s < kPeerSteps; ++s) {
+      drive_corners(w, n, w.data().time);
+      w.step();
+      if (s % 100 == 99) bad = std::max(bad, pass_throughs<3>(w.positions(), w.model().triangles));
+    }
+    steps_per_s = kPeerSteps / std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  state.counters["steps_per_s"] = steps_per_s;
+  state.counters["pass_throughs"] = bad;
+}
+BENCHMARK(BM_Peer3DCloth_s4d)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_Peer3DCloth_Bullet(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  int bad = 0;
+  double steps_per_s = 0;
+  for (auto _ : state) {
+    btSoftBodyRigidBodyCollisionConfiguration config;
+    btCollisionDispatcher dispatcher(&config);
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btSoftRigidDynamicsWorld world(&dispatcher, &broadphase, &solver, &config);
+    world.setGravity(btVector3(0, -9.81, 0));
+    btSoftBodyWorldInfo& info = world.getWorldInfo();
+    info.m_gravity = btVector3(0, -9.81, 0);
+    info.m_sparsesdf.Initialize();
+    // Same grid and corners as ours; the patch adds structural + shear links (gendiags).
+    btSoftBody* cloth = btSoftBodyHelpers::CreatePatch(
+        info, btVector3(-0.5, 0, -0.5), btVector3(0.5, 0, -0.5), btVector3(-0.5, 0, 0.5),
+        btVector3(0.5, 0, 0.5), n, n, 0, true);
+    cloth->generateBendingConstraints(2, cloth->appendMaterial());
+    cloth->setTotalMass(1e-3 * n * n);
+    cloth->m_cfg.piterations = 4;
+    cloth->m_cfg.kDF = 0.3;  // friction, as ours
+    cloth->m_cfg.collisions = btSoftBody::fCollision::CL_SS | btSoftBody::fCollision::CL_SELF;
+    cloth->generateClusters(64);
+    // Patch node (ix, iy) = iy * n + ix: our corners (0,0) and (0,n-1) are x = -0.5, z = ∓0.5.
+    const int ca = 0, cb = (n - 1) * n;
+    cloth->setMass(ca, 0);
+    cloth->setMass(cb, 0);
+    world.addSoftBody(cloth);
+    const btVector3 a0 = cloth->m_nodes[ca].m_x, b0 = cloth->m_nodes[cb].m_x;
+    std::vector<Triangle> tris;
+    for (int f = 0; f < cloth->m_faces.size(); ++f) {
+      const auto& face = cloth->m_faces[f];
+      tris.push_back({static_cast<int>(face.m_n[0] - &cloth->m_nodes[0]),
+                      static_cast<int>(face.m_n[1] - &cloth->m_nodes[0]),
+                      static_cast<int>(face.m_n[2] - &cloth->m_nodes[0])});
+    }
+    std::vector<Vec3> x(cloth->m_nodes.size());
+    double t = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 0; s < kPeerSteps; ++s) {
+      const double u = std::min(1.0, t / 0.6);
+      cloth->m_nodes[ca].m_x = a0 + btVector3(0, 0, 0.35 * u);
+      cloth->m_nodes[cb].m_x = b0 - btVector3(0, 0, 0.35 * u);
+      world.stepSimulation(1e-3, 1, 1e-3);
+      t += 1e-3;
+      if (s % 100 == 99) {
+        for (int i = 0; i < cloth->m_nodes.size(); ++i) {
+          const btVector3& p = cloth->m_nodes[i].m_x;
+          x[i] = Vec3(p.x(), p.y(), p.z());
+        }
+        bad = std::max(bad, pass_throughs<3>(x, tris));
+      }
+    }
+    steps_per_s = kPeerSteps / std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    world.removeSoftBody(cloth);
+    delete cloth;
+  }
+  state.counters["steps_per_s"] = steps_per_s;
+  state.counters["pass_throughs"] = bad;
+}
+BENCHMARK(BM_Peer3DCloth_Bullet)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+}  // namespace s4d
+
+BENCHMARK_MAIN();

@@ -1,0 +1,80 @@
+// Collision avoidance for the mass-spring world, on the proximity kernel (exact closest points
+// and conservative-advancement CCD in R^D). Two layers:
+//  1. repulsion (the paper's §5.1.2): pairs closer than the contact thickness δ get inelastic
+//     normal impulses with Coulomb friction (energy can only leave), plus the paper's equal and
+//     opposite displacement along the closest-point line back towards δ (positions only);
+//  2. a fail-safe: continuous collision over the step with the hard thickness η < δ; vertices of
+//     any pair that would come within η are stopped where they were, pass after pass, and if
+//     that has not converged every vertex is stopped. The start of a step is always η-separated,
+//     so its end is too: no step ends with two surfaces touching or crossed.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "physics/model.hpp"
+#include "proximity/bvh.hpp"
+
+namespace s4d {
+
+struct PhysicsWarnings;
+
+struct CollisionStats {
+  int contacts = 0;       // pairs that received a repulsion impulse or push
+  int frozen = 0;         // vertices stopped by the fail-safe
+  int ccd_passes = 0;     // continuous passes run
+  bool global_freeze = false;
+};
+
+template <int D>
+class CollisionSolver {
+ public:
+  CollisionSolver() = default;
+  explicit CollisionSolver(const Model<D>& model);
+
+  // x0: the (η-separated) start of the step; x1: the proposed end, corrected in place; v: the
+  // velocities, corrected in place; pinned vertices have infinite mass. Allocates nothing once
+  // warmed up (its pair buffer only grows).
+  CollisionStats solve(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1,
+                       std::span<Vec<D>> v, std::span<const std::uint8_t> pinned, double dt);
+  // Positions were replaced from outside (not by a step): recompute the cached gap bounds.
+  void reset(const Model<D>& model, std::span<const Vec<D>> x);
+
+ private:
+  struct Contact {
+    int a = 0, b = 0;                   // triangles
+    std::array<double, 3> wa{}, wb{};   // barycentric weights of the closest points
+    Vec<D> n = Vec<D>::Zero();          // unit, from b's point to a's
+    double d = 0;                       // distance at x0
+  };
+  void repulsion(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1,
+                 std::span<Vec<D>> v, std::span<const std::uint8_t> pinned, double dt,
+                 CollisionStats& stats);
+  int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
+  bool is_near(int a, int b) const;  // a's 2-ring (near_adjacent) contains b
+  void motion(const Model<D>& model, std::span<const Vec<D>> x0, std::span<const Vec<D>> x1);
+  // After an accepted step (x is its end): lower every near bound by the step's motion, and
+  // recompute exactly those that came within a few η (all of them when `all`).
+  void refresh_near_gaps(const Model<D>& model, std::span<const Vec<D>> x, bool all);
+
+  // Near pairs (triangles joined by a mesh edge but sharing no vertex) are the bulk of every
+  // broad-phase answer on a mesh and never touch while springs hold. Each keeps a lower bound of
+  // its gap, lowered by the step's motion (distances are 1-Lipschitz in the vertices) and only
+  // recomputed exactly when it comes near η: the fail-safe stays exact at a fraction of the cost.
+  struct NearPair {
+    int a = 0, b = 0;
+    double lower = 0;  // ≤ their distance at the start of the step
+  };
+  std::vector<int> near_offset_;       // nt + 1, CSR of each triangle's near_adjacent triangles
+  std::vector<int> near_tri_;          // sorted within each triangle
+  std::vector<NearPair> near_pairs_;   // near pairs sharing no vertex, a < b
+  std::vector<double> tri_motion_;     // nt, largest vertex displacement of the step, m
+
+  std::vector<Box<D>> boxes_;          // nt, per-triangle boxes
+  Bvh<D> bvh_;
+  std::vector<Contact> contacts_;      // grows to the largest contact count seen
+  std::vector<std::uint8_t> hit_;      // nv, vertices of pairs the fail-safe caught this pass
+  std::vector<double> w_;              // nv, inverse masses with pins at 0
+};
+
+}  // namespace s4d

@@ -1,0 +1,103 @@
+// Model<D>: what does not change during a run (masses, springs, triangles, parameters), built once
+// from one or more surfaces; the physics kernels read it and write only Data<D> (see world.hpp).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/vec.hpp"
+#include "shape/surface.hpp"
+
+namespace s4d {
+
+enum class Integrator {
+  kPaperEuler,       // Eq. 4 of the paper, one update per tick, no stability control
+  kSymplecticEuler,  // the same update, substepped below a stability bound (default)
+};
+// "paper-euler" / "explicit-euler" and "symplectic-euler"; throws s4d::Error for anything else.
+Integrator parse_integrator(std::string_view name);
+const char* integrator_name(Integrator integrator);
+
+enum class SpringKind : std::uint8_t { kStructural, kShear, kBending };
+
+// One spring of the generalised Hooke law (paper Eq. 1): F = k |e|^(1+β) ê, e = length - rest.
+struct Spring {
+  int a = 0, b = 0;      // vertex indices
+  double rest = 0;       // rest length, m
+  double k = 0;          // stiffness, N/m^(1+β)
+  SpringKind kind = SpringKind::kStructural;
+};
+
+template <int D>
+struct PhysicsParams {
+  double time_step = 1e-3;            // s, the haptic tick
+  double thickness = 0.02;            // δ, m: contact layer kept by repulsion
+  Vec<D> gravity = Vec<D>::Zero();    // m/s², any direction of R^D
+  double mass = 1e-3;                 // kg per vertex (ModelBuilder may override per body)
+  double stiffness = 50;              // N/m^(1+β), structural springs
+  double shear_scale = 0.5;           // shear stiffness = shear_scale × stiffness
+  double bending_scale = 0.1;         // bending stiffness = bending_scale × stiffness
+  double beta = 0;                    // exponent of paper Eq. 1 (0 = linear spring)
+  double damping = 0.02;              // N·s/m, paper Eq. 2 on every vertex velocity
+  double spring_damping = 0.02;       // N·s/m, along each spring on the relative velocity
+  double friction = 0.3;              // Coulomb coefficient between touching surfaces (0 = slippery)
+  Integrator integrator = Integrator::kSymplecticEuler;
+  bool collisions = true;             // self- and mutual collision avoidance
+  int collision_iterations = 4;       // Gauss-Seidel sweeps of the contact impulses
+  int ccd_passes = 6;                 // fail-safe passes before the global freeze
+  double max_speed = 200;             // m/s: a faster vertex means the step exploded (rolled back)
+  double max_step_motion = 0;         // m per step, 0 = δ (the paper clamps motion per frame to δ)
+  int max_substeps = 256;             // cap of the symplectic substep count
+};
+
+template <int D>
+struct Model {
+  PhysicsParams<D> params;
+  int nv = 0;                              // vertices
+  std::vector<double> mass;                // nv, kg
+  std::vector<double> inv_mass;            // nv, 1/kg
+  std::vector<Vec<D>> initial;             // nv × D, positions at build time
+  std::vector<Spring> springs;             // ns
+  std::vector<Triangle> triangles;         // nt × 3, global vertex indices (collision cells)
+  std::vector<int> body_first_vertex;      // nb + 1, vertices of body b are [first[b], first[b+1])
+  std::vector<int> body_first_triangle;    // nb + 1, same for triangles
+  std::vector<int> adjacency_offset;       // nv + 1, CSR over mesh edges
+  std::vector<int> adjacency;              // 2 × mesh edges, sorted within each vertex
+  double contact_thickness = 0;            // δ actually used (≤ params.thickness, below rest gaps)
+  double hard_thickness = 0;               // η < δ: the continuous fail-safe keeps every gap above it
+  double omega_max = 0;                    // rad/s, Gershgorin bound of sqrt(λ_max(M⁻¹K)) for β = 0
+  double damping_rate = 0;                 // 1/s, bound of the damping matrix's M⁻¹C row sums
+
+  int body_count() const { return static_cast<int>(body_first_vertex.size()) - 1; }
+  bool mesh_adjacent(int i, int j) const;  // i and j joined by a mesh edge
+  // Cells sharing a vertex or joined by a mesh edge: kept apart by springs, not by repulsion.
+  bool near_adjacent(const Triangle& a, const Triangle& b) const;
+  // Symplectic substeps needed for a tick dt (1 for the paper's integrator).
+  int substeps(double dt) const;
+};
+
+// Builds a Model from surfaces. Springs: for a surface with a grid, the paper's structural,
+// shear and bending springs; without one, mesh edges plus one bending spring across every edge
+// shared by two triangles. Throws s4d::Error on bad parameters, bad meshes, or an initial state
+// in which two cells sharing no vertex already touch.
+template <int D>
+class ModelBuilder {
+ public:
+  explicit ModelBuilder(PhysicsParams<D> params) : params_(std::move(params)) {}
+  // Adds a body; mass_per_vertex <= 0 takes params.mass. Returns the index of its first vertex.
+  int add_body(const Surface<D>& surface, double mass_per_vertex = 0);
+  Model<D> build() const;
+
+ private:
+  PhysicsParams<D> params_;
+  std::vector<Surface<D>> bodies_;
+  std::vector<double> masses_;
+};
+
+// The springs of one surface (vertex indices local to it); exposed for tests.
+template <int D>
+std::vector<Spring> make_springs(const Surface<D>& surface, double k, double shear_scale,
+                                 double bending_scale);
+
+}  // namespace s4d

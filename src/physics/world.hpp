@@ -1,0 +1,94 @@
+// World<D>: the 4D (and 3D) mass-spring world the haptic loop steps at 1 kHz: springs, gravity,
+// damping, pins and pulled vertices, tool forces, collision avoidance that never lets surfaces
+// pass through each other, and roll-back of exploding steps. A step allocates nothing.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "physics/collision.hpp"
+#include "physics/model.hpp"
+
+namespace s4d {
+
+// Numerical trouble is counted here, never thrown (see STYLE.md, MuJoCo's warnings).
+struct PhysicsWarnings {
+  std::int64_t rollbacks = 0;        // steps undone because a value went non-finite or too fast
+  std::int64_t speed_clamps = 0;     // vertex motions clamped to max_step_motion
+  std::int64_t ccd_freezes = 0;      // vertices stopped by the continuous fail-safe
+  std::int64_t global_freezes = 0;   // steps where the fail-safe stopped every vertex
+  std::int64_t rejected_inputs = 0;  // non-finite forces or targets ignored
+};
+
+// Everything that changes during a run, sized once from the model.
+template <int D>
+struct Data {
+  std::vector<Vec<D>> x;            // nv × D, positions, m
+  std::vector<Vec<D>> v;            // nv × D, velocities, m/s
+  std::vector<Vec<D>> f_ext;        // nv × D, external (tool) forces, N; kept until changed
+  std::vector<Vec<D>> target;       // nv × D, where a pinned vertex must be at the end of a step
+  std::vector<std::uint8_t> pinned; // nv, 1 = position prescribed by target (kinematic)
+  std::vector<Vec<D>> force;        // nv × D, scratch: total force of the current substep
+  std::vector<Vec<D>> x0, v0;       // nv × D each, state at the start of the step (roll-back)
+  double time = 0;                  // s
+  std::int64_t steps = 0;
+  int last_substeps = 0;            // substeps used by the last step
+  int last_contacts = 0;            // pairs handled by repulsion in the last step
+  PhysicsWarnings warnings;
+};
+
+template <int D>
+class World {
+ public:
+  // Takes the model; state starts at rest at model.initial.
+  explicit World(Model<D> model);
+
+  const Model<D>& model() const { return model_; }
+  const Data<D>& data() const { return data_; }
+  int vertex_count() const { return model_.nv; }
+  std::span<const Vec<D>> positions() const { return data_.x; }
+  std::span<const Vec<D>> velocities() const { return data_.v; }
+
+  // Advances by dt seconds (params.time_step when dt <= 0). Never throws, never allocates.
+  void step(double dt = 0);
+
+  // Tool input (haptic thread). Non-finite values are ignored and counted.
+  void set_external_force(int vertex, const Vec<D>& force);
+  void clear_external_forces();
+  // A pinned vertex follows its target (kinematic, infinite mass). Pinning keeps it where it is.
+  void pin(int vertex);
+  void pin(int vertex, const Vec<D>& target);
+  void set_target(int vertex, const Vec<D>& target);
+  void unpin(int vertex);
+  bool is_pinned(int vertex) const { return data_.pinned[vertex] != 0; }
+
+  // Replaces the state (e.g. restoring a snapshot); sizes must match. Throws s4d::Error.
+  void set_state(std::span<const Vec<D>> x, std::span<const Vec<D>> v);
+
+  // Energies, J: kinetic, spring potential (∫ of Eq. 1), gravity potential (relative to x = 0).
+  double kinetic_energy() const;
+  double spring_energy() const;
+  double gravity_energy() const;
+  double energy() const { return kinetic_energy() + spring_energy() + gravity_energy(); }
+  // Smallest distance between two triangles sharing no vertex (infinity if none are within
+  // `search`), using the proximity kernel. For tests and metrics; allocates.
+  double min_separation(double search) const;
+
+ private:
+  bool integrate(double dt);  // false when the result is non-finite or too fast
+  void accumulate_forces();
+  void apply_pins(double dt);
+  void clamp_motion(double dt);
+
+  Model<D> model_;
+  Data<D> data_;
+  CollisionSolver<D> collision_;
+};
+
+// Spring and damping forces of the current state added into data.force (for tests and tools).
+template <int D>
+void add_spring_forces(const Model<D>& model, std::span<const Vec<D>> x,
+                       std::span<const Vec<D>> v, std::span<Vec<D>> force);
+
+}  // namespace s4d
