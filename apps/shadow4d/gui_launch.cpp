@@ -15,7 +15,8 @@ bool has_display() {
   return (x && *x) || (w && *w);
 }
 
-int launch_gui(const std::string& open_spec, int frames, const std::string& window_shot) {
+int launch_gui(const std::string& open_spec, int frames, const std::string& window_shot,
+               const std::string& device) {
   if (!has_display()) {
     std::cerr << "shadow4d: no display (DISPLAY/WAYLAND_DISPLAY unset). Headless commands work:\n"
                  "  shadow4d demo            render the paper's objects to PNG\n"
@@ -28,6 +29,7 @@ int launch_gui(const std::string& open_spec, int frames, const std::string& wind
   options.open_spec = open_spec;
   options.frames = frames;
   options.window_shot = window_shot;
+  options.device = device;
   return run_gui_app(options);
 #else
   std::cerr << "shadow4d: this build has no GUI (configure with -DS4D_BUILD_GUI=ON)\n";

@@ -6,7 +6,9 @@ namespace s4d::cli {
 
 // Returns the process exit code.
 // `frames` > 0 quits after that many frames, saving the window to `window_shot` if set.
-int launch_gui(const std::string& open_spec, int frames = 0, const std::string& window_shot = {});
+// `device` (mouse|sim|replay:FILE|spacenav|openhaptics) starts the haptic loop with that device.
+int launch_gui(const std::string& open_spec, int frames = 0, const std::string& window_shot = {},
+               const std::string& device = {});
 // True when DISPLAY or WAYLAND_DISPLAY is set.
 bool has_display();
 

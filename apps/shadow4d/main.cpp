@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
       ->group("GUI scripting")->check(CLI::NonNegativeNumber);
   app.add_option("--window-shot", window_shot, "GUI: save the window, panels included, at the last frame")
       ->group("GUI scripting");
+  std::string device;
+  app.add_option("--device", device,
+                 "GUI: start the haptic loop with this device: mouse, sim, replay:FILE, spacenav, openhaptics");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "log more");
   s4d::cli::add_registered_commands(app);
@@ -28,7 +31,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
-    if (app.get_subcommands().empty()) return s4d::cli::launch_gui(open_spec, frames, window_shot);
+    if (app.get_subcommands().empty()) return s4d::cli::launch_gui(open_spec, frames, window_shot, device);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const s4d::cli::ExitStatus& e) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "app/haptics_window.hpp"
 #include "app/panels.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
@@ -88,6 +89,8 @@ int run_gui_app(const GuiOptions& options) {
   {
     Renderer renderer;
     Panels panels;
+    HapticsWindow haptics;
+    if (!options.device.empty()) haptics.start(options.device);
     GuiModel model;
     Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
     if (!model.error.empty() && !options.open_spec.empty()) {
@@ -104,6 +107,12 @@ int run_gui_app(const GuiOptions& options) {
       handle_mouse(window, model, last_x, last_y);
       handle_keys(model);
       panels.draw(model, ImGui::GetIO().Framerate);
+      if (model.open_haptics) {
+        model.open_haptics = false;
+        if (!haptics.running()) haptics.start("mouse");
+        haptics.open() = true;
+      }
+      haptics.draw();
       ImGui::Render();
 
       int fw = 0, fh = 0;

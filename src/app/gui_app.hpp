@@ -9,6 +9,7 @@ struct GuiOptions {
   int frames = 0;                // > 0: quit after this many frames (smoke tests, scripted shots)
   std::string window_shot;       // when set, the last frame (panels included) is saved here
   int width = 1280, height = 800;
+  std::string device;            // when set, the haptic loop starts with this device (--device)
 };
 
 // Returns the process exit code; never throws (errors are shown in the window or printed).

@@ -102,6 +102,10 @@ void Panels::menu_bar(GuiModel& model) {
     }
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Haptics")) {
+    if (ImGui::MenuItem("Haptics panel and workspace")) model.open_haptics = true;
+    ImGui::EndMenu();
+  }
   ImGui::TextDisabled("|  %s", model.status.c_str());
   ImGui::EndMainMenuBar();
 }

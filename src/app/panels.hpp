@@ -19,6 +19,7 @@ struct GuiModel {
   bool want_screenshot = false;
   std::string screenshot_path = "shadow4d-screenshot.png";
   int created = 0;             // counter for unique object names
+  bool open_haptics = false;   // request from the menu: show the haptics panel (starts the loop)
 };
 
 class Panels {
