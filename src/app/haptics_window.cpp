@@ -53,6 +53,11 @@ HapticsWindow::~HapticsWindow() { stop(); }
 void HapticsWindow::start(const std::string& device_spec) {
   stop();
   device_spec_ = device_spec;
+  int count = 0;
+  const char* const* names = haptics_panel_devices(&count);
+  const std::string kind = device_spec.substr(0, device_spec.find(':'));
+  for (int i = 0; i < count; ++i)
+    if (kind == names[i]) ui_.device_choice = i;
   try {
     SceneChoice choice;
     choice.name = kScenes[scene_choice_];
@@ -75,6 +80,7 @@ void HapticsWindow::stop() {
 void HapticsWindow::draw() {
   if (!ui_.open) return;
   if (!loop_) {
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 390, 30), ImGuiCond_FirstUseEver);
     ImGui::Begin("Haptics", &ui_.open);
     ImGui::TextWrapped("The haptic loop is stopped.");
     if (!start_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", start_error_.c_str());
@@ -86,12 +92,16 @@ void HapticsWindow::draw() {
     return;
   }
   const HapticSnapshot& snap = loop_->snapshot();  // the one read of this frame
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 390, 30), ImGuiCond_FirstUseEver);
   draw_haptics_panel(ui_, *loop_, snap);
   workspace_view(snap);
   if (!ui_.open) stop();  // closing the panel stops the loop and releases the device
 }
 
 void HapticsWindow::workspace_view(const HapticSnapshot& snap) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 430, display.y - 310), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(420, 300), ImGuiCond_FirstUseEver);
   ImGui::Begin("Haptic workspace");
   ImGui::Combo("scene", &scene_choice_, kScenes, static_cast<int>(std::size(kScenes)));

@@ -63,6 +63,9 @@ void Panels::open(GuiModel& model, const std::string& spec) {
     Scene scene = load_scene_or_object(spec);
     model.scene = std::move(scene);
     model.view.reset(model.scene);
+    const bool scene_file = spec.size() > 5 && spec.ends_with(".json");
+    if (!scene_file && !model.scene.objects.empty() && ambient_dim(model.scene.objects[0].shape) == 4)
+      model.view.turn_to_generic_view();
     model.status = "opened " + spec;
   } catch (const std::exception& e) {
     model.error = e.what();
@@ -206,6 +209,7 @@ void Panels::generator_dialog(GuiModel& model) {
         model.scene.objects.clear();
         model.scene.frame = Frame<4>();
         model.view.reset(model.scene);
+        if (info->dim == 4) model.view.turn_to_generic_view();
       }
       model.scene.objects.push_back(std::move(obj));
       model.status = "created " + info->name;

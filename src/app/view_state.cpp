@@ -46,6 +46,11 @@ void ViewState::drag(DragMode mode, double dx, double dy, double viewport_height
   }
 }
 
+void ViewState::turn_to_generic_view() {
+  angles_[kXW] = 30.0f;
+  angles_[kZW] = 20.0f;
+}
+
 void ViewState::scroll(double steps) {
   if (!std::isfinite(steps)) return;
   zoom_ = std::clamp(zoom_ * std::pow(1.1, steps), 0.05, 50.0);

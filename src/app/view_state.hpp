@@ -18,6 +18,11 @@ class ViewState {
   // Starts from the scene's frame and view; slider angles start at zero.
   void reset(const Scene& scene);
 
+  // A first view of a bare R^4 object (no scene file to say how to look at it): straight along
+  // w its shadow is folded onto itself, so the sliders start turned (xw 30°, zw 20°) — visibly,
+  // and "Reset 4D rotation" returns to the plain projection.
+  void turn_to_generic_view();
+
   // A mouse drag of (dx, dy) pixels in a viewport of the given height.
   void drag(DragMode mode, double dx, double dy, double viewport_height);
   // Mouse wheel: positive moves closer.

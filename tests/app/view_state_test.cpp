@@ -59,3 +59,21 @@ TEST(ViewState, StartsFromTheScenesFrameAndIgnoresGarbage) {
 
 }  // namespace
 }  // namespace s4d
+
+namespace s4d {
+namespace {
+
+TEST(ViewState, GenericViewTurnsTheSlidersAndUnfoldsTheShadow) {
+  Scene scene;
+  ViewState v;
+  v.reset(scene);
+  v.turn_to_generic_view();
+  EXPECT_FLOAT_EQ(v.plane_angles()[2], 30.0f);  // xw
+  EXPECT_FLOAT_EQ(v.plane_angles()[5], 20.0f);  // zw
+  v.apply_to(scene);
+  // Points differing only in w no longer share a shadow point.
+  EXPECT_GT((scene.frame.shadow(Vec4::UnitW()) - scene.frame.shadow(Vec4::Zero())).norm(), 0.3);
+}
+
+}  // namespace
+}  // namespace s4d
