@@ -14,6 +14,7 @@
 #include "io/object_file.hpp"
 #include "io/scene.hpp"
 #include "knots/depth_edit.hpp"
+#include "knots/dynadraw.hpp"
 #include "knots/knot_identify.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
@@ -302,9 +303,64 @@ void setup(CLI::App& knot) {
       std::cout << "resampled to " << out.point_count() << " points (" << st.refused
                 << " chords refused to avoid a pass-through); wrote " << resample_out << "\n";
   });
+
+  // A sketched stroke (cursor samples, one per line, as the GUI or a tablet records them) smoothed
+  // the way the sketching tool does it, so a stroke can be reproduced and inspected headless.
+  static std::string sketch_in, sketch_out;
+  static double sketch_dt = 1.0 / 120.0;
+  static DynadrawParams pen;
+  static bool sketch_json = false;
+  auto* sketch = knot.add_subcommand("sketch", "smooth a raw sketched stroke with Dynadraw (Haeberli)");
+  sketch->add_option("file", sketch_in, "stroke: a curve file of cursor samples")->required();
+  sketch->add_option("--out", sketch_out, "where to write the smoothed curve")->required();
+  sketch->add_option("--dt", sketch_dt, "seconds between samples")->capture_default_str()->check(CLI::Range(1e-5, 1.0));
+  sketch->add_option("--mass", pen.mass, "pen mass, kg")->capture_default_str()->check(CLI::Range(1e-6, 1e6));
+  sketch->add_option("--stiffness", pen.stiffness, "spring to the cursor, N/m")->capture_default_str()->check(CLI::Range(1e-6, 1e9));
+  sketch->add_option("--damping", pen.damping, "drag, N s/m")->capture_default_str()->check(CLI::Range(0.0, 1e9));
+  sketch->add_flag("--json", sketch_json, "machine-readable output");
+  sketch->callback([] {
+    const Curve<3> raw = load_knot_curve(sketch_in);
+    Curve<3> smooth;
+    for (const auto& comp : raw.components) {
+      Polyline<3> p;
+      p.closed = comp.closed;
+      p.points = dynadraw_stroke<3>(comp.points, sketch_dt, pen, /*settle_steps=*/0);
+      smooth.components.push_back(std::move(p));
+    }
+    write_shape_file(smooth, sketch_out);
+    if (sketch_json)
+      std::cout << json{{"points", smooth.point_count()}, {"length_before", raw.length()},
+                        {"length_after", smooth.length()}}.dump(2) << "\n";
+    else
+      std::cout << "smoothed " << smooth.point_count() << " samples: length " << raw.length() << " -> "
+                << smooth.length() << "; wrote " << sketch_out << "\n";
+  });
+
+  // Depth smoothing after over/under choices (paper 4.2): the shadow and every choice stay.
+  static Common dc;
+  static std::string depth_out;
+  static DepthSmoothing ds;
+  auto* depth = knot.add_subcommand("smooth-depth", "smooth the depth of a curve, keeping its diagram");
+  add_common(depth, dc);
+  depth->add_option("--out", depth_out, "where to write the curve")->required();
+  depth->add_option("--iterations", ds.iterations, "smoothing passes")->capture_default_str()->check(CLI::Range(1, 1000000));
+  depth->add_option("--clearance", ds.clearance, "depth gap kept at crossings, x curve size")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  depth->callback([] {
+    const Curve<3> c = load_knot_curve(dc.file);
+    const Frame<3> view = parse_view(dc.view);
+    const Curve<3> out = smooth_depth(c, view, ds);
+    write_shape_file(out, depth_out);
+    IdentifyOptions o;
+    o.frame = view;
+    const auto before = identify_knot(c, o), after = identify_knot(out, o);
+    if (dc.json_out)
+      std::cout << json{{"before", identification_json(before)}, {"after", identification_json(after)}}.dump(2) << "\n";
+    else
+      std::cout << "depth smoothed: " << before.name << " -> " << after.name << "; wrote " << depth_out << "\n";
+  });
 }
 
-const CommandRegistrar kKnot("knot", "knot engine: identify, code, compare, relax, flip, resample", setup);
+const CommandRegistrar kKnot("knot", "knot engine: identify, code, compare, relax, flip, resample, sketch, smooth-depth", setup);
 
 }  // namespace
 }  // namespace s4d::cli
