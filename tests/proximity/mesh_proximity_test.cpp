@@ -86,7 +86,9 @@ void check_self(unsigned seed) {
       if (r.hit) best = std::min(best, r.t);
     }
   ASSERT_EQ(got_i.hit, best <= 1);
-  if (got_i.hit) EXPECT_DOUBLE_EQ(got_i.t, best);
+  if (got_i.hit) {
+    EXPECT_DOUBLE_EQ(got_i.t, best);
+  }
 }
 
 template <int D, int KA, int KB>
