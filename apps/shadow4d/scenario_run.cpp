@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/plane.hpp"
 #include "io/off.hpp"
 #include "io/scene.hpp"
 #include "physics/world.hpp"
@@ -170,6 +171,12 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
   }
   const double touch = 1e-9 * (hi - lo).norm();
   Json frame_log = Json::array();
+  std::vector<ShadowCheck> shadow_log;  // shadow-clean: one per saved frame
+  auto current_surface = [&](int o) {
+    Surface<4> s = objects[o];
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) s.vertices[i] = pos4(first[o] + static_cast<int>(i));
+    return s;
+  };
   int total_intersections = 0;
   double min_gap = std::numeric_limits<double>::infinity();
   bool png = opt.png;
@@ -182,14 +189,20 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     min_gap = std::min(min_gap, gap);
     Json f{{"frame", k}, {"time", world.data().time}, {"intersections", bad},
            {"min_gap", std::isfinite(gap) ? Json(gap) : Json(nullptr)}};
+    if (spec.verdict.kind == "shadow-clean") {
+      const ShadowCheck sc = check_shadow(current_surface(object_index(spec.verdict.object)), spec.verdict.view);
+      f["shadow_length"] = sc.total_length;
+      f["shadow_curves"] = sc.curves;
+      shadow_log.push_back(sc);
+    }
     if (png) {
       Scene scene;
+      // Show the shadow the verdict judges, when it names a view.
+      if (!spec.verdict.view.empty()) apply_rotations(scene.frame, parse_rotation_list(spec.verdict.view, 4));
       for (std::size_t o = 0; o < objects.size(); ++o) {
         SceneObject so;
         so.name = spec.objects[o].name;
-        Surface<4> s = objects[o];
-        for (std::size_t i = 0; i < s.vertices.size(); ++i) s.vertices[i] = pos4(first[o] + static_cast<int>(i));
-        so.shape = s;
+        so.shape = current_surface(static_cast<int>(o));
         scene.objects.push_back(std::move(so));
       }
       char name[32];
@@ -208,6 +221,11 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
   // [SECTION] Simulate
   const double dt = model.params.time_step;
   const long steps = std::lround(spec.duration / dt);
+  // A "lifted" verdict may measure rises from a later state than the start (reference_time, s):
+  // the hanging state once the bodies have settled on each other, just before the lift.
+  const auto ref_it = spec.verdict.numbers.find("reference_time");
+  const double reference_time = ref_it == spec.verdict.numbers.end() ? 0.0 : ref_it->second;
+  std::vector<Vec4> reference = initial;
   const auto wall0 = std::chrono::steady_clock::now();
   save_frame(0);
   int next_frame = 1;
@@ -240,6 +258,8 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
       }
     }
     world.step();
+    if (reference_time > 0 && t - dt < reference_time && t >= reference_time)
+      for (int v = 0; v < model.nv; ++v) reference[v] = pos4(v);
     if (s * frames >= next_frame * steps) save_frame(next_frame++);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -322,16 +342,41 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     const std::vector<int> comp = vertex_components(v1 - v0, local, &nc);
     std::vector<double> rise(nc, 0.0), cnt(nc, 0.0);
     for (int v = v0; v < v1; ++v) {
-      rise[comp[v - v0]] += x[v][axis] - initial[v][axis];
+      rise[comp[v - v0]] += x[v][axis] - reference[v][axis];
       cnt[comp[v - v0]] += 1;
     }
     double worst = 1e300;
     for (int c = 0; c < nc; ++c) worst = std::min(worst, rise[c] / cnt[c]);
     verdict["components"] = nc;
     verdict["min_rise"] = worst;
+    verdict["rise_per_component"] = rise;
+    verdict["reference_time"] = reference_time;
+    for (int c = 0; c < nc; ++c) verdict["rise_per_component"][c] = rise[c] / cnt[c];
     const double need = num("min_rise", 0);
     ok = worst >= need;
-    detail = std::to_string(nc) + " components, the lowest rose " + fmt(worst) + " (need >= " + fmt(need) + ")";
+    detail = std::to_string(nc) + " components, the lowest rose " + fmt(worst) + " (need >= " + fmt(need) + ")" +
+             (reference_time > 0 ? " since t = " + fmt(reference_time) + " s" : "");
+  } else if (vd.kind == "shadow-clean") {
+    // The shadow's self-intersection curves at the start (they must exist, or the scenario proves
+    // nothing) and at the end (their total length must have gone to max_final_length, 0 = none).
+    const ShadowCheck s0 = shadow_log.front(), s1 = check_shadow(current_surface(vo), vd.view);
+    Json lengths = Json::array();
+    for (const ShadowCheck& c : shadow_log) lengths.push_back(c.total_length);
+    verdict["view"] = vd.view;
+    verdict["initial_length"] = s0.total_length;
+    verdict["initial_curves"] = s0.curves;
+    verdict["final_length"] = s1.total_length;
+    verdict["final_curves"] = s1.curves;
+    verdict["final_true_curves"] = s1.true_curves;
+    verdict["final_coplanar_pairs"] = s1.coplanar_pairs;
+    verdict["length_per_frame"] = lengths;
+    const double need0 = num("min_initial_length", 0), max1 = num("max_final_length", 0);
+    ok = s0.total_length >= need0 && s0.total_length > 0 && s1.total_length <= max1 && s1.true_curves == 0 &&
+         s1.coplanar_pairs == 0;
+    detail = "shadow self-intersection length " + fmt(s0.total_length) + " in " + std::to_string(s0.curves) +
+             " curves at the start (need >= " + fmt(need0) + "), " + fmt(s1.total_length) + " in " +
+             std::to_string(s1.curves) + " curves at the end (need <= " + fmt(max1) + ")" +
+             (s1.coplanar_pairs > 0 ? ", " + std::to_string(s1.coplanar_pairs) + " coplanar pairs (view not generic)" : "");
   } else {  // deforms: how far the body moved, not the vertices the tool carried
     std::vector<std::uint8_t> tool(model.nv, 0);
     for (const ActiveTool& t : tools)

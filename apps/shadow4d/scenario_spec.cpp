@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "core/plane.hpp"
 
 namespace s4d::scenario {
 namespace {
@@ -190,10 +191,20 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   }
 
   const Json& v = root.value("verdict", Json());
-  c.keys(v, "verdict", {"kind", "object", "close_via", "numbers"});
+  c.keys(v, "verdict", {"kind", "object", "close_via", "numbers", "view"});
   s.verdict.kind = c.text(v.value("kind", Json()), "verdict.kind");
-  const std::set<std::string> kinds{"untied", "knotted", "slides-off", "lifted", "deforms"};
-  if (!kinds.count(s.verdict.kind)) c.fail("verdict.kind", "must be untied, knotted, slides-off, lifted or deforms");
+  const std::set<std::string> kinds{"untied", "knotted", "slides-off", "lifted", "deforms", "shadow-clean"};
+  if (!kinds.count(s.verdict.kind))
+    c.fail("verdict.kind", "must be untied, knotted, slides-off, lifted, deforms or shadow-clean");
+  if (v.contains("view")) {
+    s.verdict.view = c.text(v["view"], "verdict.view");
+    try {
+      parse_rotation_list(s.verdict.view, 4);
+    } catch (const Error& e) {
+      c.fail("verdict.view", e.what());
+    }
+  }
+  if (s.verdict.kind == "shadow-clean" && s.dim != 4) c.fail("verdict.kind", "shadow-clean needs dim 4");
   s.verdict.object = c.text(v.value("object", Json()), "verdict.object");
   known(s.verdict.object, "verdict.object");
   if (v.contains("close_via")) s.verdict.close_via = c.vec(v["close_via"], "verdict.close_via", s.dim);

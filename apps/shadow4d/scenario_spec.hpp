@@ -46,10 +46,11 @@ struct Action {
 };
 
 struct Verdict {
-  std::string kind;                             // untied | knotted | slides-off | lifted | deforms
+  std::string kind;  // untied | knotted | slides-off | lifted | deforms | shadow-clean
   std::map<std::string, double> numbers;        // thresholds, by name
   std::string object;                           // the object the verdict looks at
   std::vector<double> close_via;                // knotted/untied: direction to close the centre line
+  std::string view;                             // shadow-clean: the 3D view, rotations "yw=30,xz=10"
 };
 
 struct ScenarioSpec {

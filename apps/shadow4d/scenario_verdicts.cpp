@@ -11,6 +11,7 @@
 #include "knots/knot_diagram.hpp"
 #include "knots/knot_invariants.hpp"
 #include "proximity/shadow_crossings.hpp"
+#include "proximity/shadow_intersections.hpp"
 
 namespace s4d::scenario {
 
@@ -90,6 +91,19 @@ KnotCheck check_knot(const std::vector<Vec3>& centre, const Vec3& via, const Vec
     k.error = e.what();
   }
   return k;
+}
+
+ShadowCheck check_shadow(const Surface<4>& surface, const std::string& view) {
+  Frame<4> frame;
+  apply_rotations(frame, parse_rotation_list(view, 4));
+  const ShadowIntersections si = shadow_intersections(surface, frame);
+  ShadowCheck c;
+  c.total_length = si.total_length;
+  c.segments = static_cast<int>(si.segments.size());
+  c.curves = static_cast<int>(si.curves.size());
+  c.true_curves = si.true_curves;
+  c.coplanar_pairs = si.coplanar_pairs;
+  return c;
 }
 
 std::vector<int> vertex_components(int nv, const std::vector<Triangle>& tris, int* count) {

@@ -1,5 +1,6 @@
 // The measurable outcomes of the paper's scenarios: knottedness of a ribbon's centre line,
-// lifted components, a cloth that slid off, deformation. Pure functions of positions.
+// lifted components, a cloth that slid off, deformation, a shadow's self-intersection curves.
+// Pure functions of positions.
 #pragma once
 #include <string>
 #include <vector>
@@ -25,6 +26,16 @@ struct KnotCheck {
 // away: both ends extended along their end directions, then joined through `via` (3 numbers).
 std::vector<Vec3> ribbon_centre_line(const std::vector<Vec4>& x, const Grid& grid);
 KnotCheck check_knot(const std::vector<Vec3>& centre, const Vec3& via, const Vec3& along);
+
+// The self-intersection curves of a surface's 3D shadow in one view (the Clifford torus pinch).
+struct ShadowCheck {
+  double total_length = 0;    // of all intersection curves in shadow space
+  int segments = 0;
+  int curves = 0;
+  int true_curves = 0;        // curves through a true 4D intersection (must stay 0)
+  int coplanar_pairs = 0;     // overlapping coplanar shadow triangles: the view is not generic
+};
+ShadowCheck check_shadow(const Surface<4>& surface, const std::string& view);
 
 // Connected components of a triangle mesh (vertex labels 0..k-1).
 std::vector<int> vertex_components(int nv, const std::vector<Triangle>& tris, int* count);
