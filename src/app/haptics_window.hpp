@@ -11,6 +11,7 @@ namespace s4d {
 
 class HapticsWindow {
  public:
+  HapticsWindow() { ui_.open = false; }  // shown when the menu or --device asks for it
   ~HapticsWindow();
   // Starts the loop with a device spec ("mouse", "sim", "replay:FILE", ...); errors are shown in the
   // panel and leave the loop stopped.

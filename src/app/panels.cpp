@@ -239,14 +239,18 @@ void Panels::dialogs(GuiModel& model) {
     model.screenshot_path = p->extension() == ".png" ? p->string() : p->string() + ".png";
     model.want_screenshot = true;
   }
-  if (!model.error.empty()) ImGui::OpenPopup("Error");
-  if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+  // A plain window, not a modal popup: ImGui 1.86 asserts when a window appears for the first
+  // time (the auto-sized panels do on frame 2) while a modal is open, e.g. after a failed open.
+  if (!model.error.empty()) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(480, 0), ImGuiCond_Appearing);
+    bool open = true;
+    ImGui::Begin("Error", &open, ImGuiWindowFlags_NoCollapse);
     ImGui::TextWrapped("%s", model.error.c_str());
-    if (ImGui::Button("OK")) {
-      model.error.clear();
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
+    if (ImGui::Button("OK")) open = false;
+    ImGui::End();
+    if (!open) model.error.clear();
   }
 }
 
