@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "shape/topology.hpp"
+#include "shape/describe.hpp"
 
 namespace s4d::cli {
 
@@ -22,25 +22,7 @@ double coverage(const Image& image) {
 
 std::string describe_scene(const Scene& scene, const Image& image, double render_ms) {
   std::ostringstream out;
-  for (const auto& obj : scene.objects) {
-    out << "  " << obj.name << ": ";
-    std::visit(
-        [&](const auto& s) {
-          using T = std::decay_t<decltype(s)>;
-          if constexpr (requires { s.triangles; }) {
-            const auto t = summarize_topology(s);
-            out << "surface in R^" << T::kDim << ", " << t.vertices << " vertices, " << t.faces
-                << " triangles, " << t.components << " component(s), Euler characteristic "
-                << t.euler_characteristic << ", " << (t.closed ? "closed" : "with boundary") << ", "
-                << (t.manifold ? "manifold" : "NOT manifold");
-          } else {
-            out << "curve in R^" << T::kDim << ", " << s.components.size() << " component(s), "
-                << s.point_count() << " points, length " << s.length();
-          }
-        },
-        obj.shape);
-    out << "\n";
-  }
+  for (const auto& obj : scene.objects) out << "  " << obj.name << ": " << describe_shape(obj.shape) << "\n";
   char line[160];
   std::snprintf(line, sizeof line, "  picture: %dx%d, %.1f%% covered, rendered in %.0f ms\n",
                 image.width, image.height, 100.0 * coverage(image), render_ms);

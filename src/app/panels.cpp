@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "shape/topology.hpp"
+#include "shape/describe.hpp"
 
 namespace s4d {
 
@@ -15,24 +15,6 @@ namespace {
 
 const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff", ".vect",
                                                ".4vect", ".txt", ".xyz", ".curve"};
-
-std::string describe(const SceneObject& obj) {
-  return std::visit(
-      [](const auto& s) -> std::string {
-        using T = std::decay_t<decltype(s)>;
-        if constexpr (requires { s.triangles; }) {
-          const auto t = summarize_topology(s);
-          return "surface in R^" + std::to_string(T::kDim) + ": " + std::to_string(t.vertices) +
-                 " vertices, " + std::to_string(t.faces) + " triangles, chi = " +
-                 std::to_string(t.euler_characteristic) + (t.closed ? ", closed" : ", with boundary") +
-                 (t.manifold ? "" : ", NOT manifold");
-        } else {
-          return "curve in R^" + std::to_string(T::kDim) + ": " + std::to_string(s.components.size()) +
-                 " component(s), " + std::to_string(s.point_count()) + " points";
-        }
-      },
-      obj.shape);
-}
 
 // Horizontal colour bar: far (blue) on the left, near (red) on the right.
 void legend(ColourMap map) {
@@ -163,7 +145,7 @@ void Panels::scene_panel(GuiModel& model) {
     ImGui::SameLine();
     ImGui::TextUnformatted(obj.name.c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%s", describe(obj).c_str());
+    ImGui::TextWrapped("%s", describe_shape(obj.shape).c_str());
     ImGui::PopStyleColor();
     ImGui::PopID();
   }

@@ -129,3 +129,20 @@ TEST(GridTriangles, TooSmallGridsAreRejected) {
 
 }  // namespace
 }  // namespace s4d
+
+#include "shape/describe.hpp"
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+TEST(DescribeShape, SaysKindSizeAndTopology) {
+  const std::string torus = describe_shape(generate("clifford-torus", {{"n", 8}, {"m", 8}}));
+  EXPECT_EQ(torus, "surface in R^4, 64 vertices, 128 triangles, 1 component(s), Euler characteristic 0, "
+                   "closed, manifold");
+  const std::string knot = describe_shape(generate("torus-knot", {{"n", 60}}));
+  EXPECT_EQ(knot.rfind("curve in R^3, 1 component(s), 60 points, length ", 0), 0u) << knot;
+}
+
+}  // namespace
+}  // namespace s4d
