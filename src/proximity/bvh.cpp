@@ -7,6 +7,7 @@ namespace s4d {
 
 template <int D>
 void Bvh<D>::build(std::span<const Box<D>> boxes) {
+  ++builds_;
   nodes_.clear();
   order_.resize(boxes.size());
   prim_boxes_.clear();

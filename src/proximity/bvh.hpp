@@ -119,12 +119,27 @@ class Bvh {
   std::size_t node_count() const { return nodes_.size(); }
   bool empty() const { return nodes_.empty(); }
 
-  // Calls f(i, j), i != j, once for every unordered pair of primitives whose boxes are `near`.
+  // Calls f(i, j), i != j, once for every unordered pair of primitives whose boxes are `near`
+  // (tested in float, rounded outward: a few pairs a double test would drop may come too).
   template <class F>
-  void self_pairs(double margin, F&& f) const;
+  void self_pairs(double margin, F&& f) const {
+    self_slot_pairs(margin, [&](int k, int l) { f(order_[k], order_[l]); });
+  }
   // Calls f(i, j) for every primitive i of this tree and j of `other` with `near` boxes.
   template <class F>
-  void pairs_with(const Bvh& other, double margin, F&& f) const;
+  void pairs_with(const Bvh& other, double margin, F&& f) const {
+    slot_pairs_with(other, margin, [&](int k, int l) { f(order_[k], other.order_[l]); });
+  }
+  // The same walks, naming primitives by their slot in the tree's order (slot k holds primitive
+  // id(k)): callers that keep per-primitive data in slot order read it sequentially.
+  template <class F>
+  void self_slot_pairs(double margin, F&& f) const;
+  template <class F>
+  void slot_pairs_with(const Bvh& other, double margin, F&& f) const;
+  int id(int slot) const { return order_[slot]; }
+  const std::vector<int>& order() const { return order_; }
+  // Counts builds (not refits): slot order changes only when this does.
+  long long builds() const { return builds_; }
   // Calls f(i) for every primitive whose box is `near` `box`.
   template <class F>
   void query(const Box<D>& box, double margin, F&& f) const;
@@ -145,8 +160,7 @@ class Bvh {
                  F& f) const {
     for (int i = na.first; i < na.first + na.count; ++i)
       for (int j = nb.first; j < nb.first + nb.count; ++j)
-        if (prim_f_[i].near(other.prim_f_[j], fm) && prim_boxes_[i].near(other.prim_boxes_[j], margin))
-          f(order_[i], other.order_[j]);
+        if (prim_f_[i].near(other.prim_f_[j], fm)) f(i, j);
   }
 
   std::vector<Node> nodes_;  // pre-order: children after their parent
@@ -154,11 +168,12 @@ class Bvh {
   std::vector<Box<D>> prim_boxes_;   // prim_boxes_[k] is the box of primitive order_[k]
   std::vector<FloatBox> prim_f_;     // the same, outward in float
   double built_size_ = 0;    // total_half_perimeter() right after build()
+  long long builds_ = 0;
 };
 
 template <int D>
 template <class F>
-void Bvh<D>::self_pairs(double margin, F&& f) const {
+void Bvh<D>::self_slot_pairs(double margin, F&& f) const {
   if (nodes_.empty()) return;
   const float fm = float_margin(margin);
   // Stack of node pairs; (n, n) means "pairs within the subtree n". Depth is O(log n) because
@@ -173,8 +188,7 @@ void Bvh<D>::self_pairs(double margin, F&& f) const {
       if (na.count > 0) {
         for (int i = na.first; i < na.first + na.count; ++i)
           for (int j = i + 1; j < na.first + na.count; ++j)
-            if (prim_f_[i].near(prim_f_[j], fm) && prim_boxes_[i].near(prim_boxes_[j], margin))
-              f(order_[i], order_[j]);
+            if (prim_f_[i].near(prim_f_[j], fm)) f(i, j);
         continue;
       }
       stack[top++] = {a + 1, a + 1};
@@ -202,7 +216,7 @@ void Bvh<D>::self_pairs(double margin, F&& f) const {
 
 template <int D>
 template <class F>
-void Bvh<D>::pairs_with(const Bvh& other, double margin, F&& f) const {
+void Bvh<D>::slot_pairs_with(const Bvh& other, double margin, F&& f) const {
   if (nodes_.empty() || other.nodes_.empty()) return;
   const float fm = float_margin(margin);
   if (!nodes_[0].box.near(other.nodes_[0].box, fm)) return;

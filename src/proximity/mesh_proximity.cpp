@@ -3,6 +3,8 @@
 #include "proximity/mesh_proximity.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -36,13 +38,25 @@ Simplex<D, K> gather(std::span<const Vec<D>> x, const Cell<K>& c) {
   return s;
 }
 
+// A cell with a non-finite vertex gets the whole space as its box: it stays a candidate with
+// every other cell, and the exact kernels (NaN distance, contact at once) decide what it means.
+template <int D>
+void add_point(Box<D>& b, const Vec<D>& p) {
+  if (p.allFinite()) {
+    b.add(p);
+  } else {
+    b.lo.setConstant(-std::numeric_limits<double>::infinity());
+    b.hi.setConstant(std::numeric_limits<double>::infinity());
+  }
+}
+
 template <int D, int K>
 void static_boxes(std::span<const Vec<D>> x, const std::vector<Cell<K>>& cells,
                   std::vector<Box<D>>& boxes) {
   boxes.resize(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     Box<D> b;
-    for (int v : cells[i]) b.add(x[v]);
+    for (int v : cells[i]) add_point<D>(b, x[v]);
     boxes[i] = b;
   }
 }
@@ -54,8 +68,8 @@ void swept_boxes(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
   for (std::size_t i = 0; i < cells.size(); ++i) {
     Box<D> b;
     for (int v : cells[i]) {
-      b.add(x0[v]);
-      b.add(x1[v]);
+      add_point<D>(b, x0[v]);
+      add_point<D>(b, x1[v]);
     }
     boxes[i] = b;
   }
@@ -111,33 +125,141 @@ void SelfProximity<D, K>::check(std::size_t n) const {
 }
 
 template <int D, int K>
+void SelfProximity<D, K>::refit_tree() {
+  bvh_.refit(boxes_);
+  if (slot_builds_ == bvh_.builds()) return;
+  slot_builds_ = bvh_.builds();
+  slot_cells_.resize(cells_.size());
+  for (std::size_t k = 0; k < cells_.size(); ++k) slot_cells_[k] = cells_[bvh_.id(static_cast<int>(k))];
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::set_temporal_coherence(bool on) {
+  coherent_ = on;
+  if (!on) radius_ = -1;
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::set_skin(double skin) {
+  skin_ = std::clamp(skin, 0.0, 8.0);  // NaN stays NaN: clamp it too
+  if (!(skin_ >= 0)) skin_ = 1.0;
+  radius_ = -1;
+}
+
+template <int D, int K>
+bool SelfProximity<D, K>::advance(std::span<const Vec<D>> x) {
+  if (!coherent_ || radius_ < 0 || x_seen_.size() != x.size()) return false;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    const double d = (x[v] - x_seen_[v]).norm();
+    vertex_move_[v] = d >= 0 ? d : inf;  // NaN moves without bound
+    x_seen_[v] = x[v];
+  }
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    double m = 0;
+    for (int v : cells_[c]) m = std::max(m, vertex_move_[v]);
+    moved_[c] += m;
+    max_moved_ = std::max(max_moved_, moved_[c]);
+  }
+  return max_moved_ < inf;
+}
+
+template <int D, int K>
+bool SelfProximity<D, K>::list_covers(double margin, double extra) const {
+  return radius_ >= 0 && radius_ - 2 * (max_moved_ + extra) >= margin;
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin) {
+  ++broad_phase_runs_;
+  radius_ = margin * (1 + skin_);
+  static_boxes<D, K>(x, cells_, boxes_);
+  refit_tree();
+  listed_.clear();
+  candidate_pairs(radius_, [&](int a, int b) {
+    const Simplex<D, K> sa = gather<D, K>(x, cells_[a]), sb = gather<D, K>(x, cells_[b]);
+    // A cheap bound is all the list keeps: the query that follows tests the close ones exactly.
+    const double lower = distance_lower_bound<D, K, K>(sa, sb, radius_);
+    if (!(lower > radius_)) listed_.push_back({a, b, lower > 0 ? lower : 0.0, 0});
+  });
+  x_seen_.assign(x.begin(), x.end());
+  vertex_move_.assign(x.size(), 0.0);
+  moved_.assign(cells_.size(), 0.0);
+  max_moved_ = 0;
+}
+
+template <int D, int K>
 void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
                                        std::vector<ProximityPair<D>>& out) {
   out.clear();
   check(x.size());
-  static_boxes<D, K>(x, cells_, boxes_);
-  bvh_.refit(boxes_);
-  bvh_.self_pairs(delta, [&](int i, int j) {
-    const Cell<K>& ci = cells_[i];
-    const Cell<K>& cj = cells_[j];
-    if (share_vertex<K, K>(ci, cj)) return;
-    const int a = std::min(i, j), b = std::max(i, j);
-    narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b, delta, out);
-  });
+  if (std::isnan(delta)) throw Error("proximity: the distance of a pairs query is not a number");
+  if (delta < 0) return;  // no distance is negative
+  if (!coherent_) {
+    ++broad_phase_runs_;
+    static_boxes<D, K>(x, cells_, boxes_);
+    refit_tree();
+    candidate_pairs(delta, [&](int a, int b) {
+      narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b, delta,
+                             out);
+    });
+    sort_pairs(out);
+    return;
+  }
+  if (!(advance(x) && list_covers(delta, 0))) build_list(x, delta);
+  for (Listed& p : listed_) {
+    if (bound(p) > delta) continue;
+    const Simplex<D, K> sa = gather<D, K>(x, cells_[p.a]), sb = gather<D, K>(x, cells_[p.b]);
+    p.moved_at = moved_[p.a] + moved_[p.b];
+    const double lower = distance_lower_bound<D, K, K>(sa, sb, delta);
+    if (lower > delta) {
+      p.gap = lower;
+      continue;
+    }
+    const ClosestPoints<D> cp = closest_points<D, K, K>(sa, sb);
+    p.gap = cp.distance;
+    if (cp.distance <= delta) out.push_back({p.a, p.b, cp});
+  }
   sort_pairs(out);
+}
+
+template <int D, int K>
+bool SelfProximity<D, K>::prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
+                                       double thickness) {
+  check(x0.size());
+  check(x1.size());
+  step_.resize(cells_.size());
+  double max_step = 0;
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    double m = 0;
+    for (int v : cells_[c]) {
+      const double d = (x1[v] - x0[v]).norm();
+      m = std::max(m, d >= 0 ? d : std::numeric_limits<double>::infinity());
+    }
+    step_[c] = m;
+    max_step = std::max(max_step, m);
+  }
+  if (coherent_ && std::isfinite(max_step)) {
+    const bool have = advance(x0);
+    if (have && list_covers(thickness, max_step)) return true;
+    // A list for this step's motion pays off when the motion is small next to the thickness;
+    // a few fast cells would inflate it for every cell, and then the swept tree is better.
+    if (max_step <= thickness) {
+      build_list(x0, thickness + 2 * max_step);
+      return true;
+    }
+  }
+  ++broad_phase_runs_;
+  swept_boxes<D, K>(x0, x1, cells_, boxes_);
+  refit_tree();
+  return false;
 }
 
 template <int D, int K>
 Impact<D> SelfProximity<D, K>::earliest_impact(std::span<const Vec<D>> x0,
                                                std::span<const Vec<D>> x1, const CcdOptions& opt) {
-  check(x0.size());
-  check(x1.size());
   Impact<D> best;
-  swept_boxes<D, K>(x0, x1, cells_, boxes_);
-  bvh_.refit(boxes_);
-  bvh_.self_pairs(opt.thickness, [&](int i, int j) {
-    if (share_vertex<K, K>(cells_[i], cells_[j])) return;
-    const int a = std::min(i, j), b = std::max(i, j);
+  step_candidates(x0, x1, opt.thickness, [&](int a, int b) {
     narrow_impact<D, K, K>(gather<D, K>(x0, cells_[a]), gather<D, K>(x1, cells_[a]),
                            gather<D, K>(x0, cells_[b]), gather<D, K>(x1, cells_[b]), a, b, opt,
                            best);

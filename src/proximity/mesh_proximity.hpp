@@ -41,6 +41,14 @@ inline bool share_vertex(const Cell<KA>& a, const Cell<KB>& b) {
 
 // One mesh (or curve) against itself. Holds its BVH and box buffers, so repeated queries on
 // moving vertices refit rather than rebuild and do not allocate (beyond growing `out`).
+//
+// Temporal coherence (on by default): a query keeps a list of every non-adjacent pair that was
+// within a radius R = margin · (1 + skin) when it last ran the broad phase, each with a lower bound
+// of its distance. Distances are 1-Lipschitz in the motion of the cells, so while the vertices
+// stay close to where they were, a pair outside the list is still farther than the margin and a
+// listed pair whose bound minus its cells' motion exceeds the margin needs no exact test. The list
+// is rebuilt only when the motion since its build could break that promise. Answers are exactly
+// those of a fresh broad phase; only their cost changes.
 template <int D, int K>
 class SelfProximity {
  public:
@@ -57,15 +65,84 @@ class SelfProximity {
   // vertex moving linearly from x0 to x1 (nv × D each).
   Impact<D> earliest_impact(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
                             const CcdOptions& opt);
+  // Calls f(a, b) (a < b, sharing no vertex) for a superset of the pairs that come within
+  // `thickness` while every vertex moves linearly from x0 to x1; the caller runs the exact test.
+  // Pairs whose cached bound proves them apart over the step are left out.
+  template <class F>
+  void step_candidates(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness,
+                       F&& f);
+
+  // Off: every query runs the broad phase from scratch (benchmarks of the cold query use this).
+  void set_temporal_coherence(bool on);
+  // The list's radius is margin · (1 + skin): a larger skin lists more pairs but survives more
+  // motion before a rebuild. Clamped to [0, 8].
+  void set_skin(double skin);
+  // Broad-phase runs so far (list builds and cold queries): what coherence saves.
+  long long broad_phase_runs() const { return broad_phase_runs_; }
+  std::size_t listed_pairs() const { return listed_.size(); }
   const Bvh<D>& bvh() const { return bvh_; }
 
  private:
+  struct Listed {
+    int a = 0, b = 0;
+    double gap = 0;       // a lower bound of their distance when their cells had moved `moved_at`
+    double moved_at = 0;  // moved_[a] + moved_[b] then
+  };
   void check(std::size_t n) const;
+  // Accumulates the motion from the last seen positions to x; false when there is no list (or
+  // the positions are not comparable), so the caller rebuilds.
+  bool advance(std::span<const Vec<D>> x);
+  // Every unlisted pair is still farther than `margin` (plus `extra` of further motion per cell).
+  bool list_covers(double margin, double extra) const;
+  void build_list(std::span<const Vec<D>> x, double margin);
+  // Per-cell motion over the step into step_; true when the list (built now if there was none and
+  // the motion is small) answers the step, false when the caller must sweep the BVH instead
+  // (after which swept boxes are in the refitted tree).
+  bool prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness);
+  double bound(const Listed& p) const { return p.gap - (moved_[p.a] + moved_[p.b] - p.moved_at); }
+
   std::vector<Cell<K>> cells_;
   int max_index_ = -1;
   std::vector<Box<D>> boxes_;  // nc, one per cell
   Bvh<D> bvh_;
+  // Refits the tree to boxes_ and keeps slot_cells_ in the tree's slot order.
+  void refit_tree();
+  std::vector<Cell<K>> slot_cells_;  // cells_[bvh_.id(k)] at slot k
+  long long slot_builds_ = -1;       // bvh_.builds() when slot_cells_ was filled
+  // Calls f(a, b), a < b, for every pair of cells sharing no vertex whose boxes are near.
+  template <class F>
+  void candidate_pairs(double margin, F&& f) const {
+    bvh_.self_slot_pairs(margin, [&](int k, int l) {
+      if (share_vertex<K, K>(slot_cells_[k], slot_cells_[l])) return;
+      const int i = bvh_.id(k), j = bvh_.id(l);
+      f(std::min(i, j), std::max(i, j));
+    });
+  }
+
+  bool coherent_ = true;
+  double skin_ = 1.0;
+  double radius_ = -1;           // every unlisted pair was farther than this at the build (< 0: none)
+  std::vector<Listed> listed_;   // in broad-phase order
+  std::vector<Vec<D>> x_seen_;   // positions at the last query
+  std::vector<double> vertex_move_;  // nv, scratch: one vertex's displacement
+  std::vector<double> moved_;    // nc: motion bound of each cell accumulated since the build
+  std::vector<double> step_;     // nc: motion bound of each cell over the current step
+  double max_moved_ = 0;
+  long long broad_phase_runs_ = 0;
 };
+
+template <int D, int K>
+template <class F>
+void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
+                                          double thickness, F&& f) {
+  const double th = thickness > 0 ? thickness : 0.0;
+  if (prepare_step(x0, x1, th)) {
+    for (const Listed& p : listed_)
+      if (!(bound(p) - step_[p.a] - step_[p.b] > th)) f(p.a, p.b);  // NaN: test it
+    return;
+  }
+  candidate_pairs(th, f);
+}
 
 // Two meshes (or a mesh and a curve) against each other; cells of the two never count as adjacent.
 template <int D, int KA, int KB>

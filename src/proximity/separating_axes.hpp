@@ -13,13 +13,14 @@ namespace s4d {
 namespace prox_detail {
 
 // Orthogonal projection onto a line never increases distances, so the gap between the projected
-// point sets (either order) bounds the distance of their convex hulls from below. Returns true
-// when that gap exceeds delta by more than the rounding of the dot products could account for.
+// point sets (either order), divided by |n|, bounds the distance of their convex hulls from below.
+// The dot products carry an error of a few ulps of |p||n|: that much is taken off the gap. Returns
+// a lower bound (<= 0 when the projections overlap; 0 for a zero or NaN axis or NaN points).
 template <int D, int NA, int NB>
-inline bool axis_separates(const std::array<Vec<D>, NA>& a, const std::array<Vec<D>, NB>& b,
-                           const Vec<D>& n, double delta) {
+inline double axis_gap(const std::array<Vec<D>, NA>& a, const std::array<Vec<D>, NB>& b,
+                       const Vec<D>& n) {
   const double len = n.norm();
-  if (!(len > 0)) return false;  // zero or NaN axis: no information
+  if (!(len > 0)) return 0;  // zero or NaN axis: no information
   double lo_a = a[0].dot(n), hi_a = lo_a, lo_b = b[0].dot(n), hi_b = lo_b;
   double sum = lo_a + lo_b;  // NaN if any projection is: min/max alone would skip it
   for (int i = 1; i < NA; ++i) {
@@ -34,58 +35,73 @@ inline bool axis_separates(const std::array<Vec<D>, NA>& a, const std::array<Vec
     hi_b = std::max(hi_b, s);
     sum += s;
   }
-  if (sum != sum) return false;
+  if (sum != sum) return 0;
   const double gap = std::max(lo_b - hi_a, lo_a - hi_b);
-  // Dot products carry an error of a few ulps of |p||n|: keep that much on the safe side.
   const double scale = std::max(std::max(std::abs(lo_a), std::abs(hi_a)),
                                 std::max(std::abs(lo_b), std::abs(hi_b)));
-  return gap > delta * len + 1e-12 * scale;  // false for NaN
+  return (gap - 1e-12 * scale) / len;
+}
+
+template <int D, int NA, int NB>
+inline bool axis_separates(const std::array<Vec<D>, NA>& a, const std::array<Vec<D>, NB>& b,
+                           const Vec<D>& n, double delta) {
+  return axis_gap<D, NA, NB>(a, b, n) > delta;
 }
 
 // Axes intrinsic to simplex s (K vertices, the first K of `pts` when pts also holds the same
 // vertices at a later time): inside its affine hull, the inward normal of each facet; outside it,
 // the component of (towards - s[0]) orthogonal to the hull (for stacked, parallel layers this is
-// the layer normal). Returns true when one of them separates pts from `other` by more than delta.
+// the layer normal). Returns the largest gap found between pts and `other`, stopping as soon as
+// one exceeds `enough`.
 template <int D, int K, int NA, int NB>
-inline bool simplex_axes_separate(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
-                                  const std::array<Vec<D>, NB>& other, const Vec<D>& towards,
-                                  double delta) {
+inline double simplex_axes_gap(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
+                               const std::array<Vec<D>, NB>& other, const Vec<D>& towards,
+                               double enough) {
   if constexpr (K == 1) {
-    return axis_separates<D, NA, NB>(pts, other, towards - s[0], delta);
+    return axis_gap<D, NA, NB>(pts, other, towards - s[0]);
   } else if constexpr (K == 2) {
     const Vec<D> d = s[1] - s[0];
-    if (axis_separates<D, NA, NB>(pts, other, d, delta)) return true;  // the two end caps
+    const double g = axis_gap<D, NA, NB>(pts, other, d);  // the two end caps
+    if (g > enough) return g;
     const double dd = d.squaredNorm();
-    if (!(dd > 0)) return false;
+    if (!(dd > 0)) return g;
     const Vec<D> w = towards - s[0];
-    return axis_separates<D, NA, NB>(pts, other, w - (w.dot(d) / dd) * d, delta);
+    return std::max(g, axis_gap<D, NA, NB>(pts, other, w - (w.dot(d) / dd) * d));
   } else {
     static_assert(K == 3, "simplices have 1, 2 or 3 vertices");
+    double best = 0;
     for (int e = 0; e < 3; ++e) {
       const Vec<D>& p = s[e];
       const Vec<D> d = s[(e + 1) % 3] - p;
       const Vec<D> r = s[(e + 2) % 3] - p;
       const double dd = d.squaredNorm();
       if (!(dd > 0)) continue;
-      if (axis_separates<D, NA, NB>(pts, other, r - (r.dot(d) / dd) * d, delta)) return true;
+      best = std::max(best, axis_gap<D, NA, NB>(pts, other, r - (r.dot(d) / dd) * d));
+      if (best > enough) return best;
     }
     if constexpr (D > 2) {
       // Orthonormal basis of the triangle's plane; skipped when the triangle is degenerate.
       const Vec<D> e1 = s[1] - s[0];
       const double l1 = e1.norm();
-      if (!(l1 > 0)) return false;
+      if (!(l1 > 0)) return best;
       const Vec<D> u1 = e1 / l1;
       Vec<D> u2 = (s[2] - s[0]) - (s[2] - s[0]).dot(u1) * u1;
       const double l2 = u2.norm();
-      if (!(l2 > 1e-12 * l1)) return false;
+      if (!(l2 > 1e-12 * l1)) return best;
       u2 /= l2;
       Vec<D> w = towards - s[0];
       w -= w.dot(u1) * u1 + w.dot(u2) * u2;
-      return axis_separates<D, NA, NB>(pts, other, w, delta);
-    } else {
-      return false;
+      best = std::max(best, axis_gap<D, NA, NB>(pts, other, w));
     }
+    return best;
   }
+}
+
+template <int D, int K, int NA, int NB>
+inline bool simplex_axes_separate(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
+                                  const std::array<Vec<D>, NB>& other, const Vec<D>& towards,
+                                  double delta) {
+  return simplex_axes_gap<D, K, NA, NB>(s, pts, other, towards, delta) > delta;
 }
 
 template <int D, int K>
@@ -97,13 +113,14 @@ inline Vec<D> centroid(const Simplex<D, K>& s) {
 
 }  // namespace prox_detail
 
-// True when dist(a, b) > delta is proven cheaply: the gap between the tight boxes, then along
-// the line of centroids, then along each simplex's facet normals and off-hull direction. False
-// means "unknown" (the exact kernel decides), never "closer than delta".
+// A cheap lower bound of dist(a, b): the Euclidean gap of the tight boxes, then the gaps along the
+// line of centroids and along each simplex's facet normals and off-hull direction; it stops as
+// soon as the bound exceeds `enough` (so a result > enough proves dist > enough, and a smaller one
+// is the best of all the axes). Never more than the distance; 0 when nothing is known (or NaN).
 template <int D, int KA, int KB>
-inline bool provably_farther(const Simplex<D, KA>& a, const Simplex<D, KB>& b, double delta) {
+inline double distance_lower_bound(const Simplex<D, KA>& a, const Simplex<D, KB>& b,
+                                   double enough) {
   using namespace prox_detail;
-  // Euclidean gap of the bounding boxes.
   double g2 = 0, sum = 0;  // sum: NaN if any coordinate is (min/max alone would skip it)
   for (int k = 0; k < D; ++k) {
     double lo_a = a[0][k], hi_a = lo_a, lo_b = b[0][k], hi_b = lo_b;
@@ -113,12 +130,22 @@ inline bool provably_farther(const Simplex<D, KA>& a, const Simplex<D, KB>& b, d
     const double g = std::max(lo_b - hi_a, lo_a - hi_b);
     if (g > 0) g2 += g * g;
   }
-  if (sum != sum) return false;  // the exact kernel decides what NaN means
-  if (g2 > delta * delta * (1 + 1e-12) + 1e-300) return true;
+  if (sum != sum) return 0;  // the exact kernel decides what NaN means
+  double best = std::sqrt(g2) * (1 - 1e-12);
+  if (best > enough) return best;
   const Vec<D> ca = centroid<D, KA>(a), cb = centroid<D, KB>(b);
-  if (axis_separates<D, KA, KB>(a, b, cb - ca, delta)) return true;
-  if (simplex_axes_separate<D, KA, KA, KB>(a, a, b, cb, delta)) return true;
-  return simplex_axes_separate<D, KB, KB, KA>(b, b, a, ca, delta);
+  best = std::max(best, axis_gap<D, KA, KB>(a, b, cb - ca));
+  if (best > enough) return best;
+  best = std::max(best, simplex_axes_gap<D, KA, KA, KB>(a, a, b, cb, enough));
+  if (best > enough) return best;
+  return std::max(best, simplex_axes_gap<D, KB, KB, KA>(b, b, a, ca, enough));
+}
+
+// True when dist(a, b) > delta is proven cheaply (distance_lower_bound); false means "unknown"
+// (the exact kernel decides), never "closer than delta".
+template <int D, int KA, int KB>
+inline bool provably_farther(const Simplex<D, KA>& a, const Simplex<D, KB>& b, double delta) {
+  return distance_lower_bound<D, KA, KB>(a, b, delta) > delta;
 }
 
 // True when the two simplices, every vertex moving linearly from *0 to *1, provably stay farther

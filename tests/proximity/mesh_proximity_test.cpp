@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <set>
 
 #include "core/error.hpp"
@@ -157,12 +158,86 @@ TEST(MeshProximity, BvhSelfPairsEqualAllOverlappingBoxes) {
   }
 }
 
+// Temporal coherence: one query object followed along a random motion (small drifts that reuse
+// its list, jumps that force rebuilds, a NaN frame and the recovery after it, thresholds that go
+// up and down) answers every query exactly as a fresh, coherence-free one does.
+template <int D, int K>
+void check_coherent_sequence(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto [x, cells] = random_mesh<D, K>(rng, 150, 240);
+  SelfProximity<D, K> coherent(cells);
+  std::vector<ProximityPair<D>> got, want;
+  std::uniform_real_distribution<double> unit(0, 1);
+  int reused = 0;
+  for (int step = 0; step < 60; ++step) {
+    std::vector<Vec<D>> next = x;
+    const double size = step % 17 == 16 ? 0.3 : 0.004;  // mostly drifts, sometimes a jump
+    for (auto& v : next) v += random_vec<D>(rng, size);
+    if (step == 30) next[cells[0][0]][0] = std::numeric_limits<double>::quiet_NaN();
+    if (step == 31) next[cells[0][0]] = random_vec<D>(rng);  // and back
+    const double delta = 0.04 + 0.03 * unit(rng);
+    const long long runs = coherent.broad_phase_runs();
+    coherent.pairs_within(next, delta, got);
+    if (coherent.broad_phase_runs() == runs) ++reused;
+    SelfProximity<D, K> fresh(cells);
+    fresh.set_temporal_coherence(false);
+    fresh.pairs_within(next, delta, want);
+    ASSERT_EQ(got.size(), want.size()) << "step " << step;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      ASSERT_EQ(std::make_pair(got[i].a, got[i].b), std::make_pair(want[i].a, want[i].b));
+      EXPECT_EQ(got[i].closest.distance, want[i].closest.distance);
+    }
+    // A step from x to next: earliest impact, and step candidates cover every pair that hits.
+    {
+      CcdOptions opt;
+      opt.thickness = 0.02;
+      const Impact<D> gi = coherent.earliest_impact(x, next, opt);
+      const Impact<D> wi = fresh.earliest_impact(x, next, opt);
+      ASSERT_EQ(gi.hit, wi.hit) << "step " << step;
+      if (gi.hit) {
+        EXPECT_EQ(gi.t, wi.t);
+        EXPECT_EQ(std::make_pair(gi.a, gi.b), std::make_pair(wi.a, wi.b));
+      }
+      if (step % 3 != 0 && step < 29) {  // the all-pairs reference below is slow: every third step
+        x = next;
+        continue;
+      }
+      std::set<std::pair<int, int>> offered;
+      coherent.step_candidates(x, next, opt.thickness, [&](int a, int b) { offered.insert({a, b}); });
+      for (int a = 0; a < static_cast<int>(cells.size()); ++a)
+        for (int b = a + 1; b < static_cast<int>(cells.size()); ++b) {
+          if (share_vertex<K, K>(cells[a], cells[b])) continue;
+          Simplex<D, K> a0, a1, b0, b1;
+          for (int i = 0; i < K; ++i) {
+            a0[i] = x[cells[a][i]], a1[i] = next[cells[a][i]];
+            b0[i] = x[cells[b][i]], b1[i] = next[cells[b][i]];
+          }
+          if (earliest_contact<D, K, K>(a0, a1, b0, b1, opt).hit)
+            EXPECT_TRUE(offered.count({a, b})) << "step " << step << " missed " << a << "," << b;
+        }
+    }
+    x = next;
+  }
+  EXPECT_GT(reused, 20) << "small drifts should reuse the list";
+}
+
+TEST(MeshProximity, CoherentQueriesEqualFreshOnesAlongAMotion) {
+  check_coherent_sequence<2, 2>(11);
+  check_coherent_sequence<3, 3>(12);
+  check_coherent_sequence<4, 3>(13);
+  check_coherent_sequence<4, 2>(14);
+}
+
 TEST(MeshProximity, BadInputIsAClearError) {
   EXPECT_THROW((SelfProximity<3, 3>({{0, 1, -2}})), Error);
   SelfProximity<3, 3> q({{0, 1, 5}});
   std::vector<Vec3> x(3, Vec3::Zero());
   std::vector<ProximityPair<3>> out;
   EXPECT_THROW(q.pairs_within(x, 0.1, out), Error);
+  std::vector<Vec3> ok(6, Vec3::Zero());
+  EXPECT_THROW(q.pairs_within(ok, std::numeric_limits<double>::quiet_NaN(), out), Error);
+  q.pairs_within(ok, -1.0, out);  // no distance is negative
+  EXPECT_TRUE(out.empty());
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ void check_static(unsigned seed) {
         ++rejected;
         EXPECT_GT(d, delta) << "D=" << D << " trial " << trial;
       }
+      // The bound itself never exceeds the distance, whatever it was asked to reach.
+      const double lower = distance_lower_bound<D, KA, KB>(a, b, delta);
+      EXPECT_LE(lower, d * (1 + 1e-12) + 1e-15) << "D=" << D << " trial " << trial;
+      EXPECT_EQ(lower > delta, far_ab);
       // Also the swept version with no motion, and with motion over a short step.
       if (provably_apart_over_step<D, KA, KB>(a, a, b, b, 1.0, delta)) {
         EXPECT_GT(d, delta);
