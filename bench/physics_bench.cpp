@@ -83,10 +83,18 @@ int pass_throughs(std::span<const Vec<D>> x, const std::vector<Triangle>& tris) 
 void BM_Cloth4DCrumpledStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   auto w = crumpled_cloth<4>(n, 600);
+  const long long runs0 = w->broad_phase_runs();
+  double max_move = 0;
   for (auto _ : state) {
     drive_corners(*w, n, w->data().time);
     w->step();
+    for (int i = 0; i < w->vertex_count(); ++i)
+      max_move = std::max(max_move, (w->data().x[i] - w->data().x0[i]).norm());
   }
+  state.counters["rebuilds_per_step"] =
+      static_cast<double>(w->broad_phase_runs() - runs0) / static_cast<double>(state.iterations());
+  state.counters["max_move"] = max_move;
+  state.counters["delta"] = w->model().contact_thickness;
   state.counters["vertices"] = n * n;
   state.counters["contacts"] = w->data().last_contacts;
   state.counters["substeps"] = w->data().last_substeps;

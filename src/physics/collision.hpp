@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "physics/model.hpp"
-#include "proximity/bvh.hpp"
+#include "proximity/mesh_proximity.hpp"
 
 namespace s4d {
 
@@ -37,8 +37,8 @@ class CollisionSolver {
   // warmed up (its pair buffer only grows).
   CollisionStats solve(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1,
                        std::span<Vec<D>> v, std::span<const std::uint8_t> pinned, double dt);
-  // Positions were replaced from outside (not by a step): recompute the cached gap bounds.
-  void reset(const Model<D>& model, std::span<const Vec<D>> x);
+  // Broad-phase runs so far: the proximity list is rebuilt only when motion calls for it.
+  long long broad_phase_runs() const { return prox_.broad_phase_runs(); }
 
  private:
   struct Contact {
@@ -52,26 +52,17 @@ class CollisionSolver {
                  CollisionStats& stats);
   int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
   bool is_near(int a, int b) const;  // a's 2-ring (near_adjacent) contains b
-  void motion(const Model<D>& model, std::span<const Vec<D>> x0, std::span<const Vec<D>> x1);
-  // After an accepted step (x is its end): lower every near bound by the step's motion, and
-  // recompute exactly those that came within a few η (all of them when `all`).
-  void refresh_near_gaps(const Model<D>& model, std::span<const Vec<D>> x, bool all);
 
-  // Near pairs (triangles joined by a mesh edge but sharing no vertex) are the bulk of every
-  // broad-phase answer on a mesh and never touch while springs hold. Each keeps a lower bound of
-  // its gap, lowered by the step's motion (distances are 1-Lipschitz in the vertices) and only
-  // recomputed exactly when it comes near η: the fail-safe stays exact at a fraction of the cost.
-  struct NearPair {
-    int a = 0, b = 0;
-    double lower = 0;  // ≤ their distance at the start of the step
-  };
+  // Near triangles (joined by a mesh edge but sharing no vertex) never touch while springs hold:
+  // repulsion leaves them to the springs, the fail-safe still checks them.
   std::vector<int> near_offset_;       // nt + 1, CSR of each triangle's near_adjacent triangles
   std::vector<int> near_tri_;          // sorted within each triangle
-  std::vector<NearPair> near_pairs_;   // near pairs sharing no vertex, a < b
-  std::vector<double> tri_motion_;     // nt, largest vertex displacement of the step, m
 
-  std::vector<Box<D>> boxes_;          // nt, per-triangle boxes
-  Bvh<D> bvh_;
+  // All pair finding goes through one coherent proximity query (mesh_proximity.hpp): its list
+  // of close pairs with distance bounds is reused from step to step while motion is small, and
+  // it answers both the repulsion's pairs within reach and the fail-safe's step candidates.
+  SelfProximity<D, 3> prox_;
+  std::vector<ProximityPair<D>> pairs_;  // grows to the largest count seen
   std::vector<Contact> contacts_;      // grows to the largest contact count seen
   std::vector<std::uint8_t> hit_;      // nv, vertices of pairs the fail-safe caught this pass
   std::vector<double> w_;              // nv, inverse masses with pins at 0

@@ -128,7 +128,6 @@ void World<D>::step(double dt) {
     std::copy(data_.x0.begin(), data_.x0.end(), data_.x.begin());
     std::fill(data_.v.begin(), data_.v.end(), Vec<D>::Zero());
     ++data_.warnings.rollbacks;
-    collision_.reset(model_, data_.x);  // its gap bounds may describe the discarded end state
   }
   data_.time += dt;
   ++data_.steps;
@@ -191,7 +190,6 @@ void World<D>::set_state(std::span<const Vec<D>> x, std::span<const Vec<D>> v) {
     if (!x[i].allFinite() || !v[i].allFinite()) throw Error("physics: set_state got a non-finite value");
   std::copy(x.begin(), x.end(), data_.x.begin());
   std::copy(v.begin(), v.end(), data_.v.begin());
-  collision_.reset(model_, data_.x);
 }
 
 template <int D>

@@ -45,6 +45,8 @@ class World {
   explicit World(Model<D> model);
 
   const Model<D>& model() const { return model_; }
+  // Broad-phase runs of the collision query so far (it reuses its pair list while motion is small).
+  long long broad_phase_runs() const { return collision_.broad_phase_runs(); }
   const Data<D>& data() const { return data_; }
   int vertex_count() const { return model_.nv; }
   std::span<const Vec<D>> positions() const { return data_.x; }
