@@ -176,11 +176,18 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin) {
   static_boxes<D, K>(x, cells_, boxes_);
   refit_tree();
   listed_.clear();
+  // The list keeps the Euclidean gap of the cells' boxes, the cheapest true bound: tighter
+  // bounds are worked out lazily, by the queries, for the pairs that come near their margin.
   candidate_pairs(radius_, [&](int a, int b) {
-    const Simplex<D, K> sa = gather<D, K>(x, cells_[a]), sb = gather<D, K>(x, cells_[b]);
-    // A cheap bound is all the list keeps: the query that follows tests the close ones exactly.
-    const double lower = distance_lower_bound<D, K, K>(sa, sb, radius_);
-    if (!(lower > radius_)) listed_.push_back({a, b, lower > 0 ? lower : 0.0, 0});
+    const Box<D>& p = boxes_[a];
+    const Box<D>& q = boxes_[b];
+    double g2 = 0;
+    for (int k = 0; k < D; ++k) {
+      const double g = std::max(q.lo[k] - p.hi[k], p.lo[k] - q.hi[k]);
+      if (g > 0) g2 += g * g;
+    }
+    const double gap = std::sqrt(g2) * (1 - 1e-12);
+    if (!(gap > radius_)) listed_.push_back({a, b, gap, 0});
   });
   x_seen_.assign(x.begin(), x.end());
   vertex_move_.assign(x.size(), 0.0);
