@@ -78,9 +78,9 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
   const double reach = kGatherFactor * delta;
   const auto& tris = model.triangles;
   contacts_.clear();
-  prox_.pairs_within(x0, reach, pairs_);
+  // A triangle's 2-ring is left to the springs (the fail-safe still guards it).
+  prox_.pairs_within(x0, reach, pairs_, [this](int a, int b) { return is_near(a, b); });
   for (const ProximityPair<D>& pp : pairs_) {
-    if (is_near(pp.a, pp.b)) continue;  // springs keep these apart; the fail-safe guards them
     const ClosestPoints<D>& cp = pp.closest;
     if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them
     Contact c;

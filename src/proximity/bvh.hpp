@@ -136,6 +136,18 @@ class Bvh {
   void self_slot_pairs(double margin, F&& f) const;
   template <class F>
   void slot_pairs_with(const Bvh& other, double margin, F&& f) const;
+  // The walk under self_slot_pairs, one level up: f(a_first, a_count, b_first, b_count) for every
+  // pair of leaves whose boxes are near, a leaf with itself included (a_first == b_first), the
+  // primitive pairs inside left to the caller (prim_near tests one, as self_slot_pairs does).
+  template <class F>
+  void self_leaf_pairs(double margin, F&& f) const;
+  bool prim_near(int k, int l, float margin) const { return prim_f_[k].near(prim_f_[l], margin); }
+  // f(first, count) for every leaf, in tree order.
+  template <class F>
+  void for_each_leaf(F&& f) const {
+    for (const Node& n : nodes_)
+      if (n.count > 0) f(n.first, n.count);
+  }
   int id(int slot) const { return order_[slot]; }
   const std::vector<int>& order() const { return order_; }
   // Counts builds (not refits): slot order changes only when this does.
@@ -174,6 +186,23 @@ class Bvh {
 template <int D>
 template <class F>
 void Bvh<D>::self_slot_pairs(double margin, F&& f) const {
+  const float fm = float_margin(margin);
+  self_leaf_pairs(margin, [&](int fa, int ca, int fb, int cb) {
+    if (fa == fb) {
+      for (int i = fa; i < fa + ca; ++i)
+        for (int j = i + 1; j < fa + ca; ++j)
+          if (prim_f_[i].near(prim_f_[j], fm)) f(i, j);
+      return;
+    }
+    for (int i = fa; i < fa + ca; ++i)
+      for (int j = fb; j < fb + cb; ++j)
+        if (prim_f_[i].near(prim_f_[j], fm)) f(i, j);
+  });
+}
+
+template <int D>
+template <class F>
+void Bvh<D>::self_leaf_pairs(double margin, F&& f) const {
   if (nodes_.empty()) return;
   const float fm = float_margin(margin);
   // Stack of node pairs; (n, n) means "pairs within the subtree n". Depth is O(log n) because
@@ -186,9 +215,7 @@ void Bvh<D>::self_slot_pairs(double margin, F&& f) const {
     const Node& na = nodes_[a];
     if (a == b) {
       if (na.count > 0) {
-        for (int i = na.first; i < na.first + na.count; ++i)
-          for (int j = i + 1; j < na.first + na.count; ++j)
-            if (prim_f_[i].near(prim_f_[j], fm)) f(i, j);
+        f(na.first, na.count, na.first, na.count);
         continue;
       }
       stack[top++] = {a + 1, a + 1};
@@ -199,7 +226,7 @@ void Bvh<D>::self_slot_pairs(double margin, F&& f) const {
     // Only pairs whose boxes are near get pushed, so (a, b) is near here.
     const Node& nb = nodes_[b];
     if (na.count > 0 && nb.count > 0) {
-      leaf_pair(*this, na, nb, margin, fm, f);
+      f(na.first, na.count, nb.first, nb.count);
       continue;
     }
     // Descend the larger (or the inner) node, testing the children before pushing them.

@@ -127,10 +127,55 @@ void SelfProximity<D, K>::check(std::size_t n) const {
 template <int D, int K>
 void SelfProximity<D, K>::refit_tree() {
   bvh_.refit(boxes_);
-  if (slot_builds_ == bvh_.builds()) return;
-  slot_builds_ = bvh_.builds();
-  slot_cells_.resize(cells_.size());
-  for (std::size_t k = 0; k < cells_.size(); ++k) slot_cells_[k] = cells_[bvh_.id(static_cast<int>(k))];
+  if (mask_builds_ == bvh_.builds()) return;
+  mask_builds_ = bvh_.builds();
+  build_leaf_masks();
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::build_leaf_masks() {
+  const int nc = static_cast<int>(cells_.size());
+  if (around_offset_.empty()) {
+    around_offset_.assign(max_index_ + 2, 0);
+    for (const auto& c : cells_)
+      for (int v : c) ++around_offset_[v + 1];
+    for (std::size_t v = 1; v < around_offset_.size(); ++v) around_offset_[v] += around_offset_[v - 1];
+    around_.resize(around_offset_.back());
+    std::vector<int> fill(around_offset_.begin(), around_offset_.end() - 1);
+    for (int c = 0; c < nc; ++c)
+      for (int v : cells_[c]) around_[fill[v]++] = c;
+  }
+  leaf_of_slot_.resize(nc);
+  leaf_first_.clear();
+  bvh_.for_each_leaf([&](int first, int count) {
+    for (int k = first; k < first + count; ++k) leaf_of_slot_[k] = static_cast<int>(leaf_first_.size());
+    leaf_first_.push_back(first);
+  });
+  std::vector<int> slot_of(nc);
+  for (int k = 0; k < nc; ++k) slot_of[bvh_.id(k)] = k;
+  leaf_mask_offset_.assign(1, 0);
+  leaf_masks_.clear();
+  std::vector<LeafMask> found;
+  for (std::size_t leaf = 0; leaf < leaf_first_.size(); ++leaf) {
+    const int first = leaf_first_[leaf];
+    found.clear();
+    for (int k = first; k < nc && leaf_of_slot_[k] == static_cast<int>(leaf); ++k)
+      for (int v : cells_[bvh_.id(k)])
+        for (int e = around_offset_[v]; e < around_offset_[v + 1]; ++e) {
+          const int s = slot_of[around_[e]];
+          const int other = leaf_of_slot_[s];
+          found.push_back({other, 1u << ((k - first) * kLeafBits + (s - leaf_first_[other]))});
+        }
+    std::sort(found.begin(), found.end(),
+              [](const LeafMask& p, const LeafMask& q) { return p.other < q.other; });
+    for (std::size_t i = 0; i < found.size();) {
+      unsigned shared = 0;
+      const int other = found[i].other;
+      for (; i < found.size() && found[i].other == other; ++i) shared |= found[i].allowed;
+      leaf_masks_.push_back({other, ~shared & 0xFFFFu});
+    }
+    leaf_mask_offset_.push_back(static_cast<int>(leaf_masks_.size()));
+  }
 }
 
 template <int D, int K>
@@ -187,7 +232,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin) {
       if (g > 0) g2 += g * g;
     }
     const double gap = std::sqrt(g2) * (1 - 1e-12);
-    if (!(gap > radius_)) listed_.push_back({a, b, gap, 0});
+    if (!(gap > radius_)) listed_.push_back({a, b, gap, 0, -1});
   });
   x_seen_.assign(x.begin(), x.end());
   vertex_move_.assign(x.size(), 0.0);
@@ -198,6 +243,13 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin) {
 template <int D, int K>
 void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
                                        std::vector<ProximityPair<D>>& out) {
+  pairs_within(x, delta, out, nullptr);
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
+                                       std::vector<ProximityPair<D>>& out,
+                                       const std::function<bool(int, int)>& skip) {
   out.clear();
   check(x.size());
   if (std::isnan(delta)) throw Error("proximity: the distance of a pairs query is not a number");
@@ -207,6 +259,7 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
     static_boxes<D, K>(x, cells_, boxes_);
     refit_tree();
     candidate_pairs(delta, [&](int a, int b) {
+      if (skip && skip(a, b)) return;
       narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b, delta,
                              out);
     });
@@ -216,13 +269,22 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
   if (!(advance(x) && list_covers(delta, 0))) build_list(x, delta);
   for (Listed& p : listed_) {
     if (bound(p) > delta) continue;
+    if (skip) {
+      if (p.skipped < 0) p.skipped = skip(p.a, p.b) ? 1 : 0;
+      if (p.skipped) continue;
+    }
     const Simplex<D, K> sa = gather<D, K>(x, cells_[p.a]), sb = gather<D, K>(x, cells_[p.b]);
     p.moved_at = moved_[p.a] + moved_[p.b];
-    const double lower = distance_lower_bound<D, K, K>(sa, sb, delta);
+    ++bounds_tightened_;
+    // Aim past delta: a bound that only just clears it is spent by the next step's motion.
+    // Measured on the stepping benchmark: goal 1 → 5,450 bounds a step, 1.5 → 3,400, 3 → 3,350
+    // (each costlier to reach).
+    const double lower = distance_lower_bound<D, K, K>(sa, sb, 1.5 * delta);
     if (lower > delta) {
       p.gap = lower;
       continue;
     }
+    ++exact_tests_;
     const ClosestPoints<D> cp = closest_points<D, K, K>(sa, sb);
     p.gap = cp.distance;
     if (cp.distance <= delta) out.push_back({p.a, p.b, cp});

@@ -2,12 +2,15 @@
 // time of impact over a step, and intersecting pairs, for one mesh against itself or two meshes.
 #pragma once
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
 #include "proximity/bvh.hpp"
 #include "proximity/closest_points.hpp"
 #include "proximity/continuous_collision.hpp"
+#include "proximity/separating_axes.hpp"
 
 namespace s4d {
 
@@ -61,6 +64,11 @@ class SelfProximity {
   // Every pair of cells sharing no vertex whose distance is <= delta at positions x (nv × D),
   // sorted by (a, b). Throws s4d::Error if x is shorter than the largest index.
   void pairs_within(std::span<const Vec<D>> x, double delta, std::vector<ProximityPair<D>>& out);
+  // The same, leaving out the pairs `skip(a, b)` names (a < b) without looking at them: a caller
+  // that ignores some pairs (the physics leaves a triangle's 2-ring to its springs) saves their
+  // cost. `skip` must be a fixed property of the pair: its answer is kept with the listed pair.
+  void pairs_within(std::span<const Vec<D>> x, double delta, std::vector<ProximityPair<D>>& out,
+                    const std::function<bool(int, int)>& skip);
   // Earliest time in [0, 1] at which two cells sharing no vertex come within opt.thickness, every
   // vertex moving linearly from x0 to x1 (nv × D each).
   Impact<D> earliest_impact(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
@@ -79,6 +87,9 @@ class SelfProximity {
   void set_skin(double skin);
   // Broad-phase runs so far (list builds and cold queries): what coherence saves.
   long long broad_phase_runs() const { return broad_phase_runs_; }
+  // Listed pairs whose bound was tightened, and exact distances computed, by pairs_within so far.
+  long long bounds_tightened() const { return bounds_tightened_; }
+  long long exact_tests() const { return exact_tests_; }
   std::size_t listed_pairs() const { return listed_.size(); }
   const Bvh<D>& bvh() const { return bvh_; }
 
@@ -87,6 +98,7 @@ class SelfProximity {
     int a = 0, b = 0;
     double gap = 0;       // a lower bound of their distance when their cells had moved `moved_at`
     double moved_at = 0;  // moved_[a] + moved_[b] then
+    std::int8_t skipped = -1;  // pairs_within's skip(a, b), once asked (-1: not yet)
   };
   void check(std::size_t n) const;
   // Accumulates the motion from the last seen positions to x; false when there is no list (or
@@ -105,19 +117,45 @@ class SelfProximity {
   int max_index_ = -1;
   std::vector<Box<D>> boxes_;  // nc, one per cell
   Bvh<D> bvh_;
-  // Refits the tree to boxes_ and keeps slot_cells_ in the tree's slot order.
+  // Refits the tree to boxes_, and redoes the leaf masks when that rebuilt it.
   void refit_tree();
-  std::vector<Cell<K>> slot_cells_;  // cells_[bvh_.id(k)] at slot k
-  long long slot_builds_ = -1;       // bvh_.builds() when slot_cells_ was filled
-  // Calls f(a, b), a < b, for every pair of cells sharing no vertex whose boxes are near.
+  long long mask_builds_ = -1;       // bvh_.builds() when the leaf masks were made
+  // Calls f(a, b), a < b, for every pair of cells sharing no vertex whose boxes are near. Pairs
+  // sharing a vertex are most of what boxes find on a mesh; leaf_masks_ drops them a leaf pair
+  // at a time, with no test per pair.
   template <class F>
   void candidate_pairs(double margin, F&& f) const {
-    bvh_.self_slot_pairs(margin, [&](int k, int l) {
-      if (share_vertex<K, K>(slot_cells_[k], slot_cells_[l])) return;
-      const int i = bvh_.id(k), j = bvh_.id(l);
-      f(std::min(i, j), std::max(i, j));
+    const float fm = float_margin(margin);
+    bvh_.self_leaf_pairs(margin, [&](int fa, int ca, int fb, int cb) {
+      unsigned allowed = 0xFFFFu;
+      const int la = leaf_of_slot_[fa], lb = leaf_of_slot_[fb];
+      for (int e = leaf_mask_offset_[la]; e < leaf_mask_offset_[la + 1]; ++e)
+        if (leaf_masks_[e].other == lb) {
+          allowed = leaf_masks_[e].allowed;
+          break;
+        }
+      for (int i = 0; i < ca; ++i)
+        for (int j = fa == fb ? i + 1 : 0; j < cb; ++j) {
+          if (!((allowed >> (i * kLeafBits + j)) & 1u) || !bvh_.prim_near(fa + i, fb + j, fm)) continue;
+          const int p = bvh_.id(fa + i), q = bvh_.id(fb + j);
+          f(std::min(p, q), std::max(p, q));
+        }
     });
   }
+  // Per leaf, the leaves it shares a vertex with and which of their slot pairs share none (bit
+  // i·kLeafBits + j: slot first_a + i against first_b + j). Redone when the tree is rebuilt.
+  static constexpr int kLeafBits = 4;
+  static_assert(Bvh<D>::kLeafSize <= kLeafBits, "leaf masks hold 4 × 4 slot pairs");
+  struct LeafMask {
+    int other = 0;
+    unsigned allowed = 0xFFFFu;
+  };
+  void build_leaf_masks();
+  std::vector<int> leaf_of_slot_;
+  std::vector<int> leaf_first_;
+  std::vector<int> leaf_mask_offset_;
+  std::vector<LeafMask> leaf_masks_;
+  std::vector<int> around_offset_, around_;  // cells around each vertex (CSR, fixed)
 
   bool coherent_ = true;
   double skin_ = 1.0;
@@ -129,6 +167,8 @@ class SelfProximity {
   std::vector<double> step_;     // nc: motion bound of each cell over the current step
   double max_moved_ = 0;
   long long broad_phase_runs_ = 0;
+  long long bounds_tightened_ = 0;
+  long long exact_tests_ = 0;
 };
 
 template <int D, int K>
@@ -137,8 +177,21 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
                                           double thickness, F&& f) {
   const double th = thickness > 0 ? thickness : 0.0;
   if (prepare_step(x0, x1, th)) {
-    for (const Listed& p : listed_)
-      if (!(bound(p) - step_[p.a] - step_[p.b] > th)) f(p.a, p.b);  // NaN: test it
+    for (Listed& p : listed_) {
+      const double reach = th + step_[p.a] + step_[p.b];
+      if (bound(p) > reach) continue;
+      // Tighten the bound at x0 before handing the pair out: a pair that only looked close
+      // (its bound was the gap of boxes) is then left out of this step and of the next few.
+      Simplex<D, K> sa, sb;
+      for (int i = 0; i < K; ++i) sa[i] = x0[cells_[p.a][i]], sb[i] = x0[cells_[p.b][i]];
+      ++bounds_tightened_;
+      const double lower = distance_lower_bound<D, K, K>(sa, sb, 1.5 * reach);
+      if (lower > bound(p)) {
+        p.gap = lower;
+        p.moved_at = moved_[p.a] + moved_[p.b];
+      }
+      if (!(lower > reach)) f(p.a, p.b);  // NaN: test it
+    }
     return;
   }
   candidate_pairs(th, f);
