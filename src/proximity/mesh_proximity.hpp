@@ -99,6 +99,7 @@ class SelfProximity {
     double gap = 0;       // a lower bound of their distance when their cells had moved `moved_at`
     double moved_at = 0;  // moved_[a] + moved_[b] then
     std::int8_t skipped = -1;  // pairs_within's skip(a, b), once asked (-1: not yet)
+    bool exact = false;        // gap is their exact distance (not a cheap bound)
   };
   void check(std::size_t n) const;
   // Accumulates the motion from the last seen positions to x; false when there is no list (or
@@ -160,7 +161,9 @@ class SelfProximity {
   bool coherent_ = true;
   double skin_ = 1.0;
   double radius_ = -1;           // every unlisted pair was farther than this at the build (< 0: none)
-  std::vector<Listed> listed_;   // in broad-phase order
+  std::vector<Listed> listed_;   // sorted by (a, b), so answers come out sorted
+  std::vector<Listed> unsorted_;  // scratch of the build
+  std::vector<int> bucket_;       // scratch of the build: counting sort by a
   std::vector<Vec<D>> x_seen_;   // positions at the last query
   std::vector<double> vertex_move_;  // nv, scratch: one vertex's displacement
   std::vector<double> moved_;    // nc: motion bound of each cell accumulated since the build
@@ -188,6 +191,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
       const double lower = distance_lower_bound<D, K, K>(sa, sb, 1.5 * reach);
       if (lower > bound(p)) {
         p.gap = lower;
+        p.exact = false;
         p.moved_at = moved_[p.a] + moved_[p.b];
       }
       if (!(lower > reach)) f(p.a, p.b);  // NaN: test it
