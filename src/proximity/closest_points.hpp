@@ -403,11 +403,12 @@ ClosestPoints<D> triangle_triangle(const Simplex<D, 3>& A, const Simplex<D, 3>& 
   return finish(best);
 }
 
-// Closest points of two simplices given by their vertices (K = 1, 2, 3), in argument order.
+// Closest points of two simplices given by their vertices (K = 1, 2, 3), in argument order, by
+// the enumeration of every face pair: the robust reference the fast path below falls back to.
 template <int D, int KA, int KB>
-ClosestPoints<D> closest_points(const Simplex<D, KA>& a, const Simplex<D, KB>& b) {
+ClosestPoints<D> closest_points_enumerated(const Simplex<D, KA>& a, const Simplex<D, KB>& b) {
   if constexpr (KA > KB) {
-    ClosestPoints<D> r = closest_points<D, KB, KA>(b, a);
+    ClosestPoints<D> r = closest_points_enumerated<D, KB, KA>(b, a);
     std::swap(r.p, r.q);
     std::swap(r.wa, r.wb);
     return r;
@@ -425,6 +426,190 @@ ClosestPoints<D> closest_points(const Simplex<D, KA>& a, const Simplex<D, KB>& b
     static_assert(KA == 3 && KB == 3, "simplices have 1, 2 or 3 vertices");
     return triangle_triangle<D>(a, b);
   }
+}
+
+// [SECTION] Active set. The enumeration solves some 40 small systems for a triangle pair; the
+// minimiser needs one. An active-set iteration walks to it: solve the face pair (the faces whose
+// relative interiors hold the closest points), drop a vertex whose weight came out <= 0, add the
+// vertex that most violates optimality, repeat. Its answer is accepted only with a certificate,
+// the optimality condition of this convex problem with slack ε = 1e-12: with n = p - q and
+// d = |n|, n·(a - p) >= -ε d |a - p| for every vertex a of A and n·(q - b) >= -ε d |q - b| for
+// every vertex b of B. Then every a in A, b in B have |a - b| >= n̂·(a - b) >= d - ε (diam A +
+// diam B): d is the distance to 1e-12 of the pair's size. Ties (parallel faces) pass, as they
+// should. Anything else (rank-deficient faces, cycling, a noisy normal when d is tiny against
+// the coordinates, non-finite input) falls back to the enumeration. Repeated queries on a slowly
+// moving pair (resting contacts, conservative advancement) start from the last face pair and
+// mostly finish in one solve.
+
+// The face pair of an answer: bit i set when wa[i] > 0, bit 3 + i when wb[i] > 0.
+inline unsigned face_pair_code(const std::array<double, 3>& wa, const std::array<double, 3>& wb) {
+  unsigned code = 0;
+  for (int i = 0; i < 3; ++i) code |= (wa[i] > 0 ? 1u : 0u) << i | (wb[i] > 0 ? 1u : 0u) << (3 + i);
+  return code;
+}
+
+namespace prox_detail {
+
+// Unconstrained least squares on the affine hulls of the face pair (fa[0..na) of A, fb[0..nb)
+// of B): the weights of its minimiser (each face's summing to 1, possibly <= 0; 0 off the faces).
+// False when the face pair is rank deficient.
+template <int D, int N, int KA, int KB>
+inline bool face_pair_weights(const Simplex<D, KA>& A, const Simplex<D, KB>& B, const int* fa,
+                              int na, const int* fb, int nb, std::array<double, 3>& wa,
+                              std::array<double, 3>& wb) {
+  wa = {};
+  wb = {};
+  if constexpr (N == 0) {
+    wa[fa[0]] = 1;
+    wb[fb[0]] = 1;
+    return true;
+  } else {
+    Eigen::Matrix<double, D, N> m;
+    int col = 0;
+    for (int k = 1; k < na; ++k) m.col(col++) = A[fa[k]] - A[fa[0]];
+    for (int k = 1; k < nb; ++k) m.col(col++) = B[fb[0]] - B[fb[k]];
+    Eigen::Matrix<double, N, 1> x;
+    if (!solve_least_squares<D, N>(m, Vec<D>(B[fb[0]] - A[fa[0]]), x,
+                                   [](const Eigen::Matrix<double, N, 1>&) { return true; }))
+      return false;
+    double sa = 0, sb = 0;
+    col = 0;
+    for (int k = 1; k < na; ++k) sa += (wa[fa[k]] = x[col++]);
+    for (int k = 1; k < nb; ++k) sb += (wb[fb[k]] = x[col++]);
+    wa[fa[0]] = 1 - sa;
+    wb[fb[0]] = 1 - sb;
+    return true;
+  }
+}
+
+template <int D, int KA, int KB>
+inline bool face_pair_weights(const Simplex<D, KA>& A, const Simplex<D, KB>& B, const int* fa,
+                              int na, const int* fb, int nb, std::array<double, 3>& wa,
+                              std::array<double, 3>& wb) {
+  switch (na + nb - 2) {
+    case 0: return face_pair_weights<D, 0, KA, KB>(A, B, fa, na, fb, nb, wa, wb);
+    case 1: return face_pair_weights<D, 1, KA, KB>(A, B, fa, na, fb, nb, wa, wb);
+    case 2: return face_pair_weights<D, 2, KA, KB>(A, B, fa, na, fb, nb, wa, wb);
+    case 3:
+      if constexpr (D >= 3) return face_pair_weights<D, 3, KA, KB>(A, B, fa, na, fb, nb, wa, wb);
+      return false;
+    case 4:
+      if constexpr (D >= 4) return face_pair_weights<D, 4, KA, KB>(A, B, fa, na, fb, nb, wa, wb);
+      return false;
+    default: return false;  // more unknowns than dimensions: rank deficient
+  }
+}
+
+// The face pair of the closest vertex pair: where a cold active-set run starts.
+template <int D, int KA, int KB>
+inline unsigned closest_vertex_code(const Simplex<D, KA>& A, const Simplex<D, KB>& B) {
+  double best = std::numeric_limits<double>::infinity();
+  unsigned code = 1u | 1u << 3;
+  for (int i = 0; i < KA; ++i)
+    for (int j = 0; j < KB; ++j) {
+      const double d2 = (A[i] - B[j]).squaredNorm();
+      if (d2 < best) best = d2, code = 1u << i | 1u << (3 + j);
+    }
+  return code;
+}
+
+// The active-set walk from face pair `code`; true with a certified answer in r (and its face pair
+// in code), false when the caller must enumerate.
+template <int D, int KA, int KB>
+inline bool closest_points_active_set(const Simplex<D, KA>& A, const Simplex<D, KB>& B,
+                                      unsigned& code, ClosestPoints<D>& r) {
+  constexpr double kSlack = 1e-12;
+  constexpr int kMaxSolves = 8;  // the walk rarely needs more than 4; past this it may be cycling
+  double sum = 0;  // non-finite input is the enumeration's to report (a NaN distance)
+  for (const Vec<D>& v : A) sum += v.sum();
+  for (const Vec<D>& v : B) sum += v.sum();
+  if (!std::isfinite(sum)) return false;
+  for (int solve = 0; solve < kMaxSolves; ++solve) {
+    int fa[3], fb[3], na = 0, nb = 0;
+    for (int i = 0; i < KA; ++i)
+      if (code >> i & 1u) fa[na++] = i;
+    for (int j = 0; j < KB; ++j)
+      if (code >> (3 + j) & 1u) fb[nb++] = j;
+    std::array<double, 3> wa, wb;
+    if (na == 0 || nb == 0 || !face_pair_weights<D, KA, KB>(A, B, fa, na, fb, nb, wa, wb))
+      return false;
+    // Outside a face: drop the vertex with the smallest weight (<= 0) and solve again.
+    unsigned drop = 0;
+    double lowest = 0;
+    for (int k = 0; k < na; ++k)
+      if (!(wa[fa[k]] > lowest)) lowest = wa[fa[k]], drop = 1u << fa[k];
+    for (int k = 0; k < nb; ++k)
+      if (!(wb[fb[k]] > lowest)) lowest = wb[fb[k]], drop = 1u << (3 + fb[k]);
+    if (drop != 0) {
+      if (!(lowest == lowest)) return false;  // NaN
+      code &= ~drop;
+      continue;
+    }
+    Vec<D> p = Vec<D>::Zero(), q = Vec<D>::Zero();
+    for (int k = 0; k < na; ++k) p += wa[fa[k]] * A[fa[k]];
+    for (int k = 0; k < nb; ++k) q += wb[fb[k]] * B[fb[k]];
+    const Vec<D> n = p - q;
+    const double d = n.norm();
+    if (!(d > 0) || !std::isfinite(d)) return false;
+    // Optimality: the most violated vertex joins its face (an active one violated means the solve
+    // was too ill-conditioned to trust).
+    unsigned add = 0;
+    double worst = -kSlack;
+    for (int i = 0; i < KA; ++i) {
+      const double len = (A[i] - p).norm(), side = (A[i] - p).dot(n);
+      if (side >= -kSlack * d * len) continue;
+      if (code >> i & 1u) return false;
+      const double v = side / (d * len);
+      if (v < worst) worst = v, add = 1u << i;
+    }
+    for (int j = 0; j < KB; ++j) {
+      const double len = (q - B[j]).norm(), side = (q - B[j]).dot(n);
+      if (side >= -kSlack * d * len) continue;
+      if (code >> (3 + j) & 1u) return false;
+      const double v = side / (d * len);
+      if (v < worst) worst = v, add = 1u << (3 + j);
+    }
+    if (add != 0) {
+      code |= add;
+      continue;
+    }
+    r.distance = d;
+    r.p = p;
+    r.q = q;
+    r.wa = wa;
+    r.wb = wb;
+    return true;
+  }
+  return false;
+}
+
+}  // namespace prox_detail
+
+// Closest points of two simplices given by their vertices (K = 1, 2, 3), in argument order: exact
+// (the certified active set of the section above, or the enumeration).
+template <int D, int KA, int KB>
+ClosestPoints<D> closest_points(const Simplex<D, KA>& a, const Simplex<D, KB>& b) {
+  if constexpr ((KA == 1 && KB <= 2) || (KB == 1 && KA <= 2)) {
+    return closest_points_enumerated<D, KA, KB>(a, b);  // closed forms: nothing to save
+  } else {
+    unsigned code = prox_detail::closest_vertex_code<D, KA, KB>(a, b);
+    ClosestPoints<D> r;
+    if (prox_detail::closest_points_active_set<D, KA, KB>(a, b, code, r)) return r;
+    return closest_points_enumerated<D, KA, KB>(a, b);
+  }
+}
+
+// The same, starting from the face pair `code` of an earlier answer (0: none) and updating it:
+// a warm start for repeated queries on a slowly moving pair.
+template <int D, int KA, int KB>
+ClosestPoints<D> closest_points_warm(const Simplex<D, KA>& a, const Simplex<D, KB>& b,
+                                     unsigned& code) {
+  if (code == 0) code = prox_detail::closest_vertex_code<D, KA, KB>(a, b);
+  ClosestPoints<D> r;
+  if (prox_detail::closest_points_active_set<D, KA, KB>(a, b, code, r)) return r;
+  r = closest_points_enumerated<D, KA, KB>(a, b);
+  code = face_pair_code(r.wa, r.wb);
+  return r;
 }
 
 }  // namespace s4d

@@ -235,7 +235,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin) {
       if (g > 0) g2 += g * g;
     }
     const double gap = std::sqrt(g2) * (1 - 1e-12);
-    if (!(gap > radius_)) unsorted_.push_back({a, b, gap, 0, -1, false});
+    if (!(gap > radius_)) unsorted_.push_back({a, b, gap, 0, -1, false, 0});
   });
   // Counting sort by a, then b within each a (a handful): linear, unlike a comparison sort.
   bucket_.assign(cells_.size() + 1, 0);
@@ -305,7 +305,9 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       }
     }
     ++exact_tests_;
-    const ClosestPoints<D> cp = closest_points<D, K, K>(sa, sb);
+    unsigned faces = p.faces;
+    const ClosestPoints<D> cp = closest_points_warm<D, K, K>(sa, sb, faces);
+    p.faces = static_cast<std::uint8_t>(faces);
     p.gap = cp.distance;
     p.exact = true;
     if (cp.distance <= delta) out.push_back({p.a, p.b, cp});

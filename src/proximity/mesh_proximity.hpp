@@ -100,6 +100,7 @@ class SelfProximity {
     double moved_at = 0;  // moved_[a] + moved_[b] then
     std::int8_t skipped = -1;  // pairs_within's skip(a, b), once asked (-1: not yet)
     bool exact = false;        // gap is their exact distance (not a cheap bound)
+    std::uint8_t faces = 0;    // face pair of their last exact answer (face_pair_code), a warm start
   };
   void check(std::size_t n) const;
   // Accumulates the motion from the last seen positions to x; false when there is no list (or

@@ -86,6 +86,16 @@ void check_properties(unsigned seed, int count) {
     const ClosestPoints<D> r = closest_points<D, KA, KB>(a, b);
     // Size of the configuration: tolerances are relative to it.
     const double size = std::max({extent<D, KA>(a), extent<D, KB>(b), r.distance, 1e-3});
+    // A warm start from any face pair (the right one, a random one, none) gives the same answer:
+    // a wrong guess fails its certificate and falls back to the enumeration.
+    for (unsigned guess : {face_pair_code(r.wa, r.wb), static_cast<unsigned>(rng() % 64), 0u}) {
+      unsigned code = guess;
+      const ClosestPoints<D> w = closest_points_warm<D, KA, KB>(a, b, code);
+      EXPECT_NEAR(w.distance, r.distance, 1e-9 * size) << "guess " << guess;
+      EXPECT_NEAR((w.p - w.q).norm(), w.distance, 1e-9 * size);
+    }
+    // The fast path (certified active set) and the enumeration are both exact.
+    EXPECT_NEAR((closest_points_enumerated<D, KA, KB>(a, b).distance), r.distance, 1e-11 * size);
     ASSERT_TRUE(std::isfinite(r.distance));
     // The points lie on the primitives with the weights reported, and realise the distance.
     Vec<D> p = Vec<D>::Zero(), q = Vec<D>::Zero();
@@ -149,6 +159,46 @@ void all_pairs(unsigned seed, int count) {
 TEST(ClosestPoints, RandomAndDegenerateConfigurationsInR2) { all_pairs<2>(100, 160); }
 TEST(ClosestPoints, RandomAndDegenerateConfigurationsInR3) { all_pairs<3>(200, 160); }
 TEST(ClosestPoints, RandomAndDegenerateConfigurationsInR4) { all_pairs<4>(300, 160); }
+
+// The active set is the fast path only if it certifies most answers without the enumeration:
+// generic pairs in every D, and the resting contact of parallel layers (ties everywhere).
+template <int D>
+void active_set_certifies(unsigned seed) {
+  std::mt19937 rng(seed);
+  int certified = 0, count = 0;
+  while (count < 400) {
+    auto [a, b] = random_pair<D, 3, 3>(rng, 0);
+    // Crossing pairs (common in R^2 and R^3) have no normal to certify: the enumeration's.
+    if (!(closest_points_enumerated<D, 3, 3>(a, b).distance > 1e-6)) continue;
+    ++count;
+    unsigned code = prox_detail::closest_vertex_code<D, 3, 3>(a, b);
+    ClosestPoints<D> r;
+    certified += prox_detail::closest_points_active_set<D, 3, 3>(a, b, code, r);
+  }
+  EXPECT_GE(certified, count * 95 / 100) << "D=" << D;
+}
+
+TEST(ClosestPoints, ActiveSetCertifiesGenericPairsAndParallelLayers) {
+  active_set_certifies<2>(7);
+  active_set_certifies<3>(8);
+  active_set_certifies<4>(9);
+  // Two grid layers of a folded cloth, exactly parallel and aligned: vertex over vertex.
+  const double h = 0.1, gap = 0.03;
+  int certified = 0, total = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Simplex<4, 3> lower{Vec4(0, 0, 0, 0), Vec4(h, 0, 0, 0), Vec4(h, h, 0, 0)};
+      const Simplex<4, 3> upper{Vec4(i * h / 2, j * h / 2, gap, 0), Vec4(i * h / 2 + h, j * h / 2, gap, 0),
+                                Vec4(i * h / 2, j * h / 2 + h, gap, 0)};
+      unsigned code = prox_detail::closest_vertex_code<4, 3, 3>(lower, upper);
+      ClosestPoints<4> r;
+      const bool ok = prox_detail::closest_points_active_set<4, 3, 3>(lower, upper, code, r);
+      certified += ok;
+      ++total;
+      if (ok) EXPECT_NEAR(r.distance, gap, 1e-15);
+    }
+  EXPECT_EQ(certified, total);
+}
 
 // [SECTION] Textbook values in R^3 and the R^4 cases the paper's checks miss.
 

@@ -185,7 +185,8 @@ void check_coherent_sequence(unsigned seed) {
     ASSERT_EQ(got.size(), want.size()) << "step " << step;
     for (std::size_t i = 0; i < want.size(); ++i) {
       ASSERT_EQ(std::make_pair(got[i].a, got[i].b), std::make_pair(want[i].a, want[i].b));
-      EXPECT_EQ(got[i].closest.distance, want[i].closest.distance);
+      // Both exact; a warm-started answer may differ from the enumeration in the last bits.
+      EXPECT_NEAR(got[i].closest.distance, want[i].closest.distance, 1e-9);
     }
     // A step from x to next: earliest impact, and step candidates cover every pair that hits.
     {
