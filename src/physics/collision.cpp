@@ -35,38 +35,11 @@ Simplex<D, 3> gather(std::span<const Vec<D>> x, const Triangle& t) {
 template <int D>
 CollisionSolver<D>::CollisionSolver(const Model<D>& model)
     : prox_(std::vector<Cell<3>>(model.triangles.begin(), model.triangles.end())) {
-  const auto& tris = model.triangles;
-  const int nt = static_cast<int>(tris.size());
   hit_.assign(model.nv, 0);
   w_.assign(model.nv, 0.0);
   prox_.set_skin(kProximitySkin);
-  contacts_.reserve(4 * tris.size() + 16);
-  pairs_.reserve(4 * tris.size() + 16);
-  // Triangles around each vertex, then each triangle's 2-ring through its vertices' neighbours.
-  std::vector<std::vector<int>> around(model.nv);
-  for (int t = 0; t < nt; ++t)
-    for (int v : tris[t]) around[v].push_back(t);
-  near_offset_.push_back(0);
-  std::vector<int> ring;
-  for (int t = 0; t < nt; ++t) {
-    ring.clear();
-    for (int v : tris[t]) {
-      for (int u : around[v]) ring.push_back(u);
-      for (int k = model.adjacency_offset[v]; k < model.adjacency_offset[v + 1]; ++k)
-        for (int u : around[model.adjacency[k]]) ring.push_back(u);
-    }
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    for (int u : ring)
-      if (u != t) near_tri_.push_back(u);
-    near_offset_.push_back(static_cast<int>(near_tri_.size()));
-  }
-}
-
-template <int D>
-bool CollisionSolver<D>::is_near(int a, int b) const {
-  return std::binary_search(near_tri_.begin() + near_offset_[a],
-                            near_tri_.begin() + near_offset_[a + 1], b);
+  contacts_.reserve(4 * model.triangles.size() + 16);
+  pairs_.reserve(4 * model.triangles.size() + 16);
 }
 
 template <int D>
@@ -78,8 +51,9 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
   const double reach = kGatherFactor * delta;
   const auto& tris = model.triangles;
   contacts_.clear();
-  // A triangle's 2-ring is left to the springs (the fail-safe still guards it).
-  prox_.pairs_within(x0, reach, pairs_, [this](int a, int b) { return is_near(a, b); });
+  // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs; the fail-safe
+  // still guards them.
+  prox_.pairs_within(x0, reach, pairs_, RingPairs::kExclude);
   for (const ProximityPair<D>& pp : pairs_) {
     const ClosestPoints<D>& cp = pp.closest;
     if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them

@@ -51,12 +51,6 @@ class CollisionSolver {
                  std::span<Vec<D>> v, std::span<const std::uint8_t> pinned, double dt,
                  CollisionStats& stats);
   int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
-  bool is_near(int a, int b) const;  // a's 2-ring (near_adjacent) contains b
-
-  // Near triangles (joined by a mesh edge but sharing no vertex) never touch while springs hold:
-  // repulsion leaves them to the springs, the fail-safe still checks them.
-  std::vector<int> near_offset_;       // nt + 1, CSR of each triangle's near_adjacent triangles
-  std::vector<int> near_tri_;          // sorted within each triangle
 
   // All pair finding goes through one coherent proximity query (mesh_proximity.hpp): its list
   // of close pairs with distance bounds is reused from step to step while motion is small, and

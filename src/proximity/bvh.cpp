@@ -9,6 +9,7 @@ template <int D>
 void Bvh<D>::build(std::span<const Box<D>> boxes) {
   ++builds_;
   nodes_.clear();
+  leaves_.clear();
   order_.resize(boxes.size());
   prim_boxes_.clear();
   prim_f_.clear();
@@ -26,6 +27,13 @@ void Bvh<D>::build(std::span<const Box<D>> boxes) {
   }
   nodes_.reserve(2 * (boxes.size() / kLeafSize + 1));
   build_node(boxes, centres, 0, static_cast<int>(boxes.size()));
+  // Leaves numbered in pre-order, which is slot order.
+  leaves_.clear();
+  for (Node& n : nodes_)
+    if (n.count > 0) {
+      n.leaf = static_cast<int>(leaves_.size());
+      leaves_.push_back({n.first, n.count, static_cast<int>(&n - nodes_.data())});
+    }
   prim_boxes_.resize(boxes.size());
   prim_f_.resize(boxes.size());
   for (std::size_t k = 0; k < boxes.size(); ++k) {
@@ -65,8 +73,18 @@ int Bvh<D>::build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centr
 
 template <int D>
 void Bvh<D>::fit_nodes() {
+  lanes_.resize(leaves_.size());
   for (int n = static_cast<int>(nodes_.size()) - 1; n >= 0; --n) {
     Node& node = nodes_[n];
+    if (node.count > 0) {
+      LeafLanes& l = lanes_[node.leaf];
+      l = LeafLanes{};
+      for (int j = 0; j < node.count; ++j)
+        for (int axis = 0; axis < D; ++axis) {
+          l.lo[axis][j] = prim_f_[node.first + j].lo[axis];
+          l.hi[axis][j] = prim_f_[node.first + j].hi[axis];
+        }
+    }
     FloatBox b = prim_f_[node.count > 0 ? node.first : 0];
     if (node.count > 0) {
       for (int i = node.first + 1; i < node.first + node.count; ++i) b.add(prim_f_[i]);

@@ -71,6 +71,26 @@ struct alignas(16) FloatBox {
     return true;
 #endif
   }
+  // Squared Euclidean gap to b, rounded down (each of the seven operations rounds by at most
+  // 2^-24 relative). Unused lanes span all of R and add nothing.
+  float gap2(const FloatBox& b) const {
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 g = _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(b.lo), _mm_load_ps(hi)),
+                                           _mm_sub_ps(_mm_load_ps(lo), _mm_load_ps(b.hi))),
+                                zero);
+    const __m128 sq = _mm_mul_ps(g, g);
+    const __m128 pair = _mm_add_ps(sq, _mm_movehl_ps(sq, sq));
+    return _mm_cvtss_f32(_mm_add_ss(pair, _mm_shuffle_ps(pair, pair, 1))) * (1 - 1e-6f);
+#else
+    float s = 0;
+    for (int k = 0; k < 4; ++k) {
+      const float g = std::max(std::max(b.lo[k] - hi[k], lo[k] - b.hi[k]), 0.0f);
+      s += g * g;
+    }
+    return s * (1 - 1e-6f);
+#endif
+  }
   float half_perimeter(int dims) const {
     float s = 0;
     for (int k = 0; k < dims; ++k) s += std::max(hi[k] - lo[k], 0.0f);
@@ -106,9 +126,9 @@ inline float float_margin(double margin) {
 template <int D>
 class Bvh {
  public:
-  // Primitives per leaf. Leaf pairs are tested primitive by primitive (float boxes, then the
-  // exact double test); 4 measured fastest of 1, 2, 4, 8 on the crumpled-grid benchmark.
-  static constexpr int kLeafSize = 4;
+  // Primitives per leaf: two groups of four SIMD lanes (leaf_gaps2 tests a primitive against a
+  // whole leaf at once). 8 halves the node pairs a self walk visits against 4.
+  static constexpr int kLeafSize = 8;
 
   // Builds the tree for these boxes (one per primitive; primitive i is boxes[i]).
   void build(std::span<const Box<D>> boxes);
@@ -136,18 +156,26 @@ class Bvh {
   void self_slot_pairs(double margin, F&& f) const;
   template <class F>
   void slot_pairs_with(const Bvh& other, double margin, F&& f) const;
-  // The walk under self_slot_pairs, one level up: f(a_first, a_count, b_first, b_count) for every
-  // pair of leaves whose boxes are near, a leaf with itself included (a_first == b_first), the
-  // primitive pairs inside left to the caller (prim_near tests one, as self_slot_pairs does).
+  // The walk under self_slot_pairs, one level up: f(la, lb) for every pair of leaves whose boxes
+  // are near, a leaf with itself included (la == lb), the primitive pairs inside left to the
+  // caller (prim_near tests one, as self_slot_pairs does). Leaves are numbered in slot order.
   template <class F>
   void self_leaf_pairs(double margin, F&& f) const;
   bool prim_near(int k, int l, float margin) const { return prim_f_[k].near(prim_f_[l], margin); }
-  // f(first, count) for every leaf, in tree order.
-  template <class F>
-  void for_each_leaf(F&& f) const {
-    for (const Node& n : nodes_)
-      if (n.count > 0) f(n.first, n.count);
+  // Squared Euclidean gaps between the box of the primitive in slot k and the boxes of leaf l's
+  // primitives (lane j: slot leaf_first(l) + j; lanes past its size are meaningless), in float:
+  // each is at most the squared gap of the double boxes (outward float boxes, and the
+  // arithmetic's rounding taken off), so a pair within a distance is never lost.
+  // Returns the bit mask of the lanes j < kLeafSize whose squared gap is <= r2.
+  unsigned leaf_gaps2(int k, int l, float r2, float out[kLeafSize]) const;
+  // Whether the box of the primitive in slot k may be within sqrt(r2) of leaf l's box (the same
+  // rounding as leaf_gaps2): one test that spares leaf_gaps2 for a primitive far from the leaf.
+  bool prim_near_leaf(int k, int l, float r2) const {
+    return prim_f_[k].gap2(nodes_[leaves_[l].node].box) <= r2;
   }
+  int leaf_count() const { return static_cast<int>(leaves_.size()); }
+  int leaf_first(int l) const { return leaves_[l].first; }
+  int leaf_size(int l) const { return leaves_[l].count; }
   int id(int slot) const { return order_[slot]; }
   const std::vector<int>& order() const { return order_; }
   // Counts builds (not refits): slot order changes only when this does.
@@ -162,6 +190,10 @@ class Bvh {
     int first = 0;   // leaf: first index into order_; inner: index of the right child
     int count = 0;   // leaf: number of primitives (> 0); inner: 0 (left child is this + 1)
     float size = 0;  // box half perimeter: decides which side to descend
+    int leaf = -1;   // leaf: its number (slot order)
+  };
+  struct Leaf {
+    int first = 0, count = 0, node = 0;
   };
   int build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centres, int begin, int end);
   void fit_nodes();  // node boxes from prim_boxes_, bottom-up
@@ -175,6 +207,13 @@ class Bvh {
         if (prim_f_[i].near(other.prim_f_[j], fm)) f(i, j);
   }
 
+  // Every leaf's boxes as four lanes per axis (lane j: slot first + j), for leaf_gaps2.
+  struct alignas(16) LeafLanes {
+    float lo[4][kLeafSize] = {};
+    float hi[4][kLeafSize] = {};
+  };
+  std::vector<LeafLanes> lanes_;  // per leaf
+  std::vector<Leaf> leaves_;      // by number: their slots
   std::vector<Node> nodes_;  // pre-order: children after their parent
   std::vector<int> order_;   // primitive ids, grouped by leaf
   std::vector<Box<D>> prim_boxes_;   // prim_boxes_[k] is the box of primitive order_[k]
@@ -184,10 +223,50 @@ class Bvh {
 };
 
 template <int D>
+inline unsigned Bvh<D>::leaf_gaps2(int k, int leaf, float r2, float out[kLeafSize]) const {
+  static_assert(kLeafSize % 4 == 0, "leaves are groups of four lanes");
+  const FloatBox& a = prim_f_[k];
+  const LeafLanes& l = lanes_[leaf];
+  unsigned near = 0;
+#if defined(__SSE2__)
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 shrink = _mm_set1_ps(1 - 1e-6f);
+  const __m128 limit = _mm_set1_ps(r2);
+  for (int group = 0; group < kLeafSize; group += 4) {
+    __m128 acc = zero;
+    for (int axis = 0; axis < D; ++axis) {
+      const __m128 g =
+          _mm_max_ps(_mm_max_ps(_mm_sub_ps(_mm_load_ps(l.lo[axis] + group), _mm_set1_ps(a.hi[axis])),
+                                _mm_sub_ps(_mm_set1_ps(a.lo[axis]), _mm_load_ps(l.hi[axis] + group))),
+                     zero);
+      acc = _mm_add_ps(acc, _mm_mul_ps(g, g));
+    }
+    // Each operation rounds by at most 2^-24 relative; seven of them stay under 1e-6.
+    acc = _mm_mul_ps(acc, shrink);
+    _mm_storeu_ps(out + group, acc);
+    near |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(acc, limit))) << group;
+  }
+#else
+  for (int j = 0; j < kLeafSize; ++j) {
+    float acc = 0;
+    for (int axis = 0; axis < D; ++axis) {
+      const float g = std::max(std::max(l.lo[axis][j] - a.hi[axis], a.lo[axis] - l.hi[axis][j]), 0.0f);
+      acc += g * g;
+    }
+    out[j] = acc * (1 - 1e-6f);
+    if (out[j] <= r2) near |= 1u << j;
+  }
+#endif
+  return near;
+}
+
+template <int D>
 template <class F>
 void Bvh<D>::self_slot_pairs(double margin, F&& f) const {
   const float fm = float_margin(margin);
-  self_leaf_pairs(margin, [&](int fa, int ca, int fb, int cb) {
+  self_leaf_pairs(margin, [&](int la, int lb) {
+    const int fa = leaves_[la].first, ca = leaves_[la].count;
+    const int fb = leaves_[lb].first, cb = leaves_[lb].count;
     if (fa == fb) {
       for (int i = fa; i < fa + ca; ++i)
         for (int j = i + 1; j < fa + ca; ++j)
@@ -215,7 +294,7 @@ void Bvh<D>::self_leaf_pairs(double margin, F&& f) const {
     const Node& na = nodes_[a];
     if (a == b) {
       if (na.count > 0) {
-        f(na.first, na.count, na.first, na.count);
+        f(na.leaf, na.leaf);
         continue;
       }
       stack[top++] = {a + 1, a + 1};
@@ -226,7 +305,7 @@ void Bvh<D>::self_leaf_pairs(double margin, F&& f) const {
     // Only pairs whose boxes are near get pushed, so (a, b) is near here.
     const Node& nb = nodes_[b];
     if (na.count > 0 && nb.count > 0) {
-      f(na.first, na.count, nb.first, nb.count);
+      f(na.leaf, nb.leaf);
       continue;
     }
     // Descend the larger (or the inner) node, testing the children before pushing them.

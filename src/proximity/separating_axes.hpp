@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "proximity/closest_points.hpp"
 #include "proximity/continuous_collision.hpp"
@@ -48,53 +49,76 @@ inline bool axis_separates(const std::array<Vec<D>, NA>& a, const std::array<Vec
   return axis_gap<D, NA, NB>(a, b, n) > delta;
 }
 
+// The best of several axes: its gap and, when asked (axis != nullptr), the axis that gave it.
+template <int D>
+struct BestAxis {
+  double gap = 0;
+  Vec<D>* axis = nullptr;
+  template <class A, class B>
+  void offer(const A& a, const B& b, const Vec<D>& n) {
+    constexpr int NA = static_cast<int>(std::tuple_size_v<A>), NB = static_cast<int>(std::tuple_size_v<B>);
+    const double g = axis_gap<D, NA, NB>(a, b, n);
+    if (g > gap) {
+      gap = g;
+      if (axis) *axis = n;
+    }
+  }
+};
+
 // Axes intrinsic to simplex s (K vertices, the first K of `pts` when pts also holds the same
 // vertices at a later time): inside its affine hull, the inward normal of each facet; outside it,
 // the component of (towards - s[0]) orthogonal to the hull (for stacked, parallel layers this is
-// the layer normal). Returns the largest gap found between pts and `other`, stopping as soon as
-// one exceeds `enough`.
+// the layer normal). Raises `best` with the gaps between pts and `other`, stopping as soon as one
+// exceeds `enough`.
 template <int D, int K, int NA, int NB>
-inline double simplex_axes_gap(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
-                               const std::array<Vec<D>, NB>& other, const Vec<D>& towards,
-                               double enough) {
+inline void simplex_axes(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
+                         const std::array<Vec<D>, NB>& other, const Vec<D>& towards, double enough,
+                         BestAxis<D>& best) {
   if constexpr (K == 1) {
-    return axis_gap<D, NA, NB>(pts, other, towards - s[0]);
+    best.offer(pts, other, Vec<D>(towards - s[0]));
   } else if constexpr (K == 2) {
     const Vec<D> d = s[1] - s[0];
-    const double g = axis_gap<D, NA, NB>(pts, other, d);  // the two end caps
-    if (g > enough) return g;
+    best.offer(pts, other, d);  // the two end caps
+    if (best.gap > enough) return;
     const double dd = d.squaredNorm();
-    if (!(dd > 0)) return g;
+    if (!(dd > 0)) return;
     const Vec<D> w = towards - s[0];
-    return std::max(g, axis_gap<D, NA, NB>(pts, other, w - (w.dot(d) / dd) * d));
+    best.offer(pts, other, Vec<D>(w - (w.dot(d) / dd) * d));
   } else {
     static_assert(K == 3, "simplices have 1, 2 or 3 vertices");
-    double best = 0;
     for (int e = 0; e < 3; ++e) {
       const Vec<D>& p = s[e];
       const Vec<D> d = s[(e + 1) % 3] - p;
       const Vec<D> r = s[(e + 2) % 3] - p;
       const double dd = d.squaredNorm();
       if (!(dd > 0)) continue;
-      best = std::max(best, axis_gap<D, NA, NB>(pts, other, r - (r.dot(d) / dd) * d));
-      if (best > enough) return best;
+      best.offer(pts, other, Vec<D>(r - (r.dot(d) / dd) * d));
+      if (best.gap > enough) return;
     }
     if constexpr (D > 2) {
       // Orthonormal basis of the triangle's plane; skipped when the triangle is degenerate.
       const Vec<D> e1 = s[1] - s[0];
       const double l1 = e1.norm();
-      if (!(l1 > 0)) return best;
+      if (!(l1 > 0)) return;
       const Vec<D> u1 = e1 / l1;
       Vec<D> u2 = (s[2] - s[0]) - (s[2] - s[0]).dot(u1) * u1;
       const double l2 = u2.norm();
-      if (!(l2 > 1e-12 * l1)) return best;
+      if (!(l2 > 1e-12 * l1)) return;
       u2 /= l2;
       Vec<D> w = towards - s[0];
       w -= w.dot(u1) * u1 + w.dot(u2) * u2;
-      best = std::max(best, axis_gap<D, NA, NB>(pts, other, w));
+      best.offer(pts, other, w);
     }
-    return best;
   }
+}
+
+template <int D, int K, int NA, int NB>
+inline double simplex_axes_gap(const Simplex<D, K>& s, const std::array<Vec<D>, NA>& pts,
+                               const std::array<Vec<D>, NB>& other, const Vec<D>& towards,
+                               double enough) {
+  BestAxis<D> best;
+  simplex_axes<D, K, NA, NB>(s, pts, other, towards, enough, best);
+  return best.gap;
 }
 
 template <int D, int K, int NA, int NB>
@@ -117,28 +141,36 @@ inline Vec<D> centroid(const Simplex<D, K>& s) {
 // line of centroids and along each simplex's facet normals and off-hull direction; it stops as
 // soon as the bound exceeds `enough` (so a result > enough proves dist > enough, and a smaller one
 // is the best of all the axes). Never more than the distance; 0 when nothing is known (or NaN).
+// With `axis`, also the direction that gave the bound (left as it was when the bound is 0): a
+// caller that asks again after a small motion can try that one direction first (axis_gap).
 template <int D, int KA, int KB>
 inline double distance_lower_bound(const Simplex<D, KA>& a, const Simplex<D, KB>& b,
-                                   double enough) {
+                                   double enough, Vec<D>* axis = nullptr) {
   using namespace prox_detail;
-  double g2 = 0, sum = 0;  // sum: NaN if any coordinate is (min/max alone would skip it)
+  double sum = 0;  // NaN if any coordinate is (min/max alone would skip it)
+  Vec<D> g = Vec<D>::Zero();
   for (int k = 0; k < D; ++k) {
     double lo_a = a[0][k], hi_a = lo_a, lo_b = b[0][k], hi_b = lo_b;
     for (int i = 1; i < KA; ++i) lo_a = std::min(lo_a, a[i][k]), hi_a = std::max(hi_a, a[i][k]), sum += a[i][k];
     for (int j = 1; j < KB; ++j) lo_b = std::min(lo_b, b[j][k]), hi_b = std::max(hi_b, b[j][k]), sum += b[j][k];
     sum += lo_a + lo_b;
-    const double g = std::max(lo_b - hi_a, lo_a - hi_b);
-    if (g > 0) g2 += g * g;
+    // The signed per-axis separation: its direction is an axis as good as the boxes' gap.
+    if (lo_b - hi_a > 0) g[k] = lo_b - hi_a;
+    if (lo_a - hi_b > 0) g[k] = -(lo_a - hi_b);
   }
   if (sum != sum) return 0;  // the exact kernel decides what NaN means
-  double best = std::sqrt(g2) * (1 - 1e-12);
-  if (best > enough) return best;
+  BestAxis<D> best;
+  best.axis = axis;
+  best.gap = g.norm() * (1 - 1e-12);
+  if (axis && best.gap > 0) *axis = g;
+  if (best.gap > enough) return best.gap;
   const Vec<D> ca = centroid<D, KA>(a), cb = centroid<D, KB>(b);
-  best = std::max(best, axis_gap<D, KA, KB>(a, b, cb - ca));
-  if (best > enough) return best;
-  best = std::max(best, simplex_axes_gap<D, KA, KA, KB>(a, a, b, cb, enough));
-  if (best > enough) return best;
-  return std::max(best, simplex_axes_gap<D, KB, KB, KA>(b, b, a, ca, enough));
+  best.offer(a, b, Vec<D>(cb - ca));
+  if (best.gap > enough) return best.gap;
+  simplex_axes<D, KA, KA, KB>(a, a, b, cb, enough, best);
+  if (best.gap > enough) return best.gap;
+  simplex_axes<D, KB, KB, KA>(b, b, a, ca, enough, best);
+  return best.gap;
 }
 
 // True when dist(a, b) > delta is proven cheaply (distance_lower_bound); false means "unknown"

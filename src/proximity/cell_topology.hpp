@@ -1,0 +1,40 @@
+// The fixed neighbourhood structure of a mesh's cells that self-proximity leans on: its edges,
+// vertex adjacency, the cells around each vertex, and its ring pairs.
+#pragma once
+#include <vector>
+
+#include "proximity/cells.hpp"
+
+namespace s4d {
+
+// A ring pair is two cells that share no vertex but are joined by a mesh edge (a vertex of one
+// is a neighbour of a vertex of the other): the next-nearest neighbours on the surface. On a
+// fine mesh they are most of the pairs any distance query near the mesh's own spacing finds,
+// and their relative motion is the mesh's strain, far smaller than its motion.
+template <int K>
+struct CellTopology {
+  CellTopology() = default;
+  // Cells' vertex indices must lie in [0, nv).
+  CellTopology(const std::vector<Cell<K>>& cells, int nv);
+
+  int vertex_count = 0;
+  std::vector<std::array<int, 2>> edges;     // unique, (u, v) with u < v
+  std::vector<int> neighbour_offset, neighbours;  // CSR: each vertex's neighbours along edges
+  std::vector<int> around_offset, around;    // CSR: the cells holding each vertex
+  std::vector<int> ring_offset, ring;        // CSR by cell a: its ring partners b > a, sorted
+
+  // f(cell) for every cell sharing a vertex with `c` or forming a ring pair with it (c itself
+  // included, some cells more than once).
+  template <class F>
+  void for_each_topological_neighbour(const Cell<K>& c, F&& f) const {
+    for (int v : c) {
+      for (int e = around_offset[v]; e < around_offset[v + 1]; ++e) f(around[e]);
+      for (int n = neighbour_offset[v]; n < neighbour_offset[v + 1]; ++n) {
+        const int w = neighbours[n];
+        for (int e = around_offset[w]; e < around_offset[w + 1]; ++e) f(around[e]);
+      }
+    }
+  }
+};
+
+}  // namespace s4d

@@ -1,0 +1,127 @@
+// What the whole-mesh queries share below the broad phase: gathering a cell's vertices, cell boxes
+// (static and swept), and the narrow phase of one candidate pair (cheap separating-axis rejection,
+// then the exact kernels of closest_points.hpp / continuous_collision.hpp).
+#pragma once
+#include <algorithm>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "proximity/bvh.hpp"
+#include "proximity/cells.hpp"
+#include "proximity/continuous_collision.hpp"
+#include "proximity/separating_axes.hpp"
+
+namespace s4d::prox_detail {
+
+template <int K>
+int max_index(const std::vector<Cell<K>>& cells) {
+  int m = -1;
+  for (const auto& c : cells)
+    for (int v : c) {
+      if (v < 0) throw Error("proximity: cell with negative vertex index " + std::to_string(v));
+      m = std::max(m, v);
+    }
+  return m;
+}
+
+inline void check_size(std::size_t n, int max_index, const char* what) {
+  if (max_index >= 0 && n <= static_cast<std::size_t>(max_index))
+    throw Error(std::string("proximity: ") + what + " has " + std::to_string(n) +
+                " vertices but the cells use index " + std::to_string(max_index));
+}
+
+template <int D, int K>
+Simplex<D, K> gather(std::span<const Vec<D>> x, const Cell<K>& c) {
+  Simplex<D, K> s;
+  for (int i = 0; i < K; ++i) s[i] = x[c[i]];
+  return s;
+}
+
+// A cell with a non-finite vertex gets the whole space as its box: it stays a candidate with
+// every other cell, and the exact kernels (NaN distance, contact at once) decide what it means.
+template <int D>
+void add_point(Box<D>& b, const Vec<D>& p) {
+  if (p.allFinite()) {
+    b.add(p);
+  } else {
+    b.lo.setConstant(-std::numeric_limits<double>::infinity());
+    b.hi.setConstant(std::numeric_limits<double>::infinity());
+  }
+}
+
+template <int D, int K>
+void static_boxes(std::span<const Vec<D>> x, const std::vector<Cell<K>>& cells,
+                  std::vector<Box<D>>& boxes) {
+  boxes.resize(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    Box<D> b;
+    for (int v : cells[i]) add_point<D>(b, x[v]);
+    boxes[i] = b;
+  }
+}
+
+template <int D, int K>
+void swept_boxes(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
+                 const std::vector<Cell<K>>& cells, std::vector<Box<D>>& boxes) {
+  boxes.resize(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    Box<D> b;
+    for (int v : cells[i]) {
+      add_point<D>(b, x0[v]);
+      add_point<D>(b, x1[v]);
+    }
+    boxes[i] = b;
+  }
+}
+
+// Euclidean gap of two boxes, a lower bound of the distance of anything inside them (0 for a
+// non-finite box).
+template <int D>
+double box_gap(const Box<D>& p, const Box<D>& q) {
+  double g2 = 0;
+  for (int k = 0; k < D; ++k) {
+    const double g = std::max(q.lo[k] - p.hi[k], p.lo[k] - q.hi[k]);
+    if (g > 0) g2 += g * g;
+  }
+  return g2 < std::numeric_limits<double>::infinity() ? std::sqrt(g2) * (1 - 1e-12) : 0.0;
+}
+
+template <int D, int KA, int KB>
+void narrow_within(const Simplex<D, KA>& sa, const Simplex<D, KB>& sb, int a, int b, double delta,
+                   std::vector<ProximityPair<D>>& out) {
+  if (provably_farther<D, KA, KB>(sa, sb, delta)) return;
+  const ClosestPoints<D> cp = closest_points<D, KA, KB>(sa, sb);
+  if (cp.distance <= delta) out.push_back({a, b, cp});
+}
+
+// Continuous test of one candidate pair against the best impact so far.
+template <int D, int KA, int KB>
+void narrow_impact(const Simplex<D, KA>& a0, const Simplex<D, KA>& a1, const Simplex<D, KB>& b0,
+                   const Simplex<D, KB>& b1, int a, int b, const CcdOptions& opt, Impact<D>& best) {
+  const double t_max = best.hit ? best.t : opt.t_max;
+  // Cheap exclusion: the swept vertex sets stay apart along some axis over [0, t_max].
+  if (provably_apart_over_step<D, KA, KB>(a0, a1, b0, b1, t_max, opt.thickness)) return;
+  CcdOptions o = opt;
+  o.t_max = t_max;
+  ++best.narrow_tests;
+  const CcdResult<D> r = earliest_contact<D, KA, KB>(a0, a1, b0, b1, o);
+  if (r.hit && (!best.hit || r.t < best.t || (r.t == best.t && std::pair(a, b) < std::pair(best.a, best.b)))) {
+    best.hit = true;
+    best.t = r.t;
+    best.a = a;
+    best.b = b;
+    best.at_t = r.at_t;
+  }
+}
+
+template <int D>
+void sort_pairs(std::vector<ProximityPair<D>>& out) {
+  std::sort(out.begin(), out.end(), [](const ProximityPair<D>& x, const ProximityPair<D>& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+}
+
+}  // namespace s4d::prox_detail

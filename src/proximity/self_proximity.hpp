@@ -1,0 +1,314 @@
+// One mesh (or curve) against itself: all cell pairs within δ and the earliest impact of a step,
+// answered from temporally coherent bounds so that a simulation's per-step query costs a
+// fraction of a fresh broad phase.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "proximity/bvh.hpp"
+#include "proximity/cell_topology.hpp"
+#include "proximity/cells.hpp"
+#include "proximity/continuous_collision.hpp"
+#include "proximity/narrow_phase.hpp"
+#include "proximity/separating_axes.hpp"
+
+namespace s4d {
+
+// Whether a self query reports ring pairs (cells sharing no vertex but joined by a mesh edge; see
+// cell_topology.hpp). A cloth simulation leaves them to its springs and asks for the others only.
+enum class RingPairs { kInclude, kExclude };
+
+// Holds the BVH, the topology and the bounds, so repeated queries on moving vertices refit rather
+// than rebuild and do not allocate once warmed up (beyond growing `out`).
+//
+// Temporal coherence (on by default) rests on one fact: a distance is 1-Lipschitz in relative
+// motion. If the vertices moved by Δ_v since some time t0, dist_ab(t) >= dist_ab(t0) - M_ab with
+// M_ab = max |Δ_i - Δ_j| over the vertices i of a and j of b. Three tiers of pairs use it:
+//  - the fringe: pairs that came near the margin. Each keeps a lower bound of its distance at
+//    its own snapshot (its six vertices' positions then), so M_ab is their exact relative motion
+//    since: a pair is looked at again only once it has really moved by its slack.
+//  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh). Each keeps
+//    g = (a lower bound at some t0) - M_ab(t0) with motion measured from the last build, so that
+//    dist_ab(t) >= g - M_ab(t); the strain of the edges around a cell bounds M_ab for all its
+//    ring partners at once (three edges join any vertex of a to any of b), so far pairs cost a
+//    comparison per cell.
+//  - the list: every other non-adjacent pair whose boxes were within R = margin · (1 + skin) at
+//    the last build, with the same kind of bound. An unlisted pair is still farther than R - 2ρ,
+//    where ρ is the radius of a ball holding every displacement since the build (net, not path
+//    length; a common translation costs nothing). The list is rebuilt, keeping what it knew of
+//    the pairs that stay, when R - 2ρ falls below the margin.
+// Answers are exactly those of a fresh broad phase; only their cost changes.
+template <int D, int K>
+class SelfProximity {
+ public:
+  SelfProximity() = default;
+  // Throws s4d::Error if a cell has a negative index.
+  explicit SelfProximity(std::vector<Cell<K>> cells);
+
+  const std::vector<Cell<K>>& cells() const { return cells_; }
+  const CellTopology<K>& topology() const { return topo_; }
+
+  // Every pair of cells sharing no vertex whose distance is <= delta at positions x (nv × D),
+  // sorted by (a, b); ring pairs left out when asked. Throws s4d::Error if x is shorter than the
+  // largest index or delta is NaN.
+  void pairs_within(std::span<const Vec<D>> x, double delta, std::vector<ProximityPair<D>>& out,
+                    RingPairs ring = RingPairs::kInclude);
+  // Earliest time in [0, 1] at which two cells sharing no vertex come within opt.thickness, every
+  // vertex moving linearly from x0 to x1 (nv × D each).
+  Impact<D> earliest_impact(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
+                            const CcdOptions& opt);
+  // Calls f(a, b) (a < b, sharing no vertex) for a superset of the pairs that come within
+  // `thickness` while every vertex moves linearly from x0 to x1; the caller runs the exact test.
+  // Pairs whose bound proves them apart over the step are left out.
+  template <class F>
+  void step_candidates(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness,
+                       F&& f);
+
+  // Off: every query runs the broad phase from scratch (benchmarks of the cold query use this).
+  void set_temporal_coherence(bool on);
+  // The list's radius is margin · (1 + skin): a larger skin lists more pairs but survives more
+  // motion before a rebuild. Clamped to [0, 8].
+  void set_skin(double skin);
+  // Broad-phase runs so far (list builds and cold queries): what coherence saves.
+  long long broad_phase_runs() const { return broad_phase_runs_; }
+  // Pairs whose bound was tightened, and exact distances computed, by the queries so far.
+  long long bounds_tightened() const { return bounds_tightened_; }
+  long long exact_tests() const { return exact_tests_; }
+  std::size_t listed_pairs() const { return listed_.size(); }
+  std::size_t ring_pairs() const { return ring_gap_.size(); }
+  std::size_t fringe_pairs() const { return fringe_.size(); }
+  const Bvh<D>& bvh() const { return bvh_; }
+
+ private:
+  // A listed pair: dist_ab(t) >= gap - M_ab(t), M over the displacement since the build. (Ring
+  // pairs keep the same fields in ring_gap_, ring_fringe_ and ring_axis_.)
+  struct Tracked {
+    int a = 0, b = 0;
+    double gap = 0;
+    int fringe = -1;  // its entry in fringe_ while it is there (then gap is unused)
+    // The separating direction last found for it (zero: none): motion turns it slowly, so the
+    // gap of the cells' projections on it stays a tight lower bound, six dot products against
+    // the forty of the separating axes (and more of the exact distance).
+    std::array<float, D> axis{};
+  };
+  // A pair near the margin: dist_ab(t) >= lower - (its vertices' relative motion since x0).
+  struct Fringe {
+    int a = 0, b = 0;
+    bool ring = false;  // its owner is ring pair `owner`, else listed_[owner]
+    bool touching = false;  // within the margin at its last exact test (a resting contact)
+    bool kept = false;      // scratch of a list build: its pair stays listed
+    std::uint8_t faces = 0;  // face pair of its last exact answer (face_pair_code): warm start
+    int owner = 0;
+    double lower = 0;
+    std::array<Vec<D>, 2 * K> x0;  // the snapshot: a's vertices, then b's
+    std::array<float, D> axis{};   // as Tracked::axis; from its last exact closest points
+  };
+  // The motion bounds of one displacement field u (nv): per cell, the largest |u| of its vertices
+  // (so M_ab <= reach[a] + reach[b]) and a bound of M_ab over its ring partners (ring[a]).
+  struct MotionBounds {
+    std::vector<double> reach, ring;
+    bool ring_valid = false;
+  };
+
+  void check(std::size_t n) const;
+  // Displacements since the build for x (disp_, rho_, motion_.reach); false when there is no
+  // build to compare with or x is not comparable (sizes, non-finite), so the caller rebuilds.
+  bool measure(std::span<const Vec<D>> x);
+  // motion_.ring for disp_ (computed once per measure, when asked).
+  const std::vector<double>& ring_bounds();
+  // 3 × the largest |u_p - u_q| over the edges at a cell's vertices and their neighbours.
+  void ring_motion(const std::vector<Vec<D>>& u, std::vector<double>& out);
+  // M_ab for the displacements since the build.
+  double relative_motion(int a, int b) const;
+  // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
+  // so the bounds carry over to the new reference; otherwise they restart from boxes.
+  void build_list(std::span<const Vec<D>> x, double margin, bool measured);
+  // The step's motion (step_, step_rho_, step_motion_) and whether the tracked pairs (built now
+  // if there were none and the motion is small) answer it; false when the caller must sweep the
+  // BVH instead (after which swept boxes are in boxes_ and the refitted tree).
+  bool prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness);
+
+  // [Fringe]
+  // Relative motion of f's vertices from its snapshot to x.
+  double snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const;
+  // The gap along `axis` between cells a and b at x (a lower bound of their distance; -inf when
+  // the axis is zero).
+  double axis_bound(int a, int b, const std::array<float, D>& axis, std::span<const Vec<D>> x) const;
+  // Re-proves f at x: the gap along its axis unless it was touching, else the exact distance.
+  // Takes a new snapshot; true (with the closest points) when within delta.
+  bool test_fringe(Fringe& f, std::span<const Vec<D>> x, double delta, ClosestPoints<D>& cp);
+  // A list or ring pair whose bound came within delta at x (m: its M_ab now): proven farther,
+  // or moved into the fringe and tested there. True (with the closest points) when within delta.
+  bool examine(bool ring, int owner, int a, int b, std::span<const Vec<D>> x, double m,
+               double delta, ClosestPoints<D>& cp);
+  // Hands fringe_[i] back to its owner with the bound `lower` at x, and drops it.
+  void evict(std::size_t i, double lower);
+  void remove_fringe(std::size_t i);
+  // A list or ring pair's fields (ring gaps include the cell's debt, and are +inf in the fringe).
+  double& gap_of(bool ring, int k) { return ring ? ring_gap_[k] : listed_[k].gap; }
+  int& fringe_of(bool ring, int k) { return ring ? ring_fringe_[k] : listed_[k].fringe; }
+  std::array<float, D>& axis_of(bool ring, int k) { return ring ? ring_axis_[k] : listed_[k].axis; }
+  // Tightens a pair's bound at x0 over a step of relative motion s: true if it may come within
+  // `thickness` (`lower` in: the bound known, out: the bound at x0).
+  bool step_candidate(int a, int b, Fringe* f, std::span<const Vec<D>> x0, double thickness,
+                      double s, double& lower);
+
+  std::vector<Cell<K>> cells_;
+  int max_index_ = -1;
+  CellTopology<K> topo_;
+  std::vector<Box<D>> boxes_;  // nc, one per cell
+  Bvh<D> bvh_;
+  // Refits the tree to boxes_, and redoes the leaf masks when that rebuilt it.
+  void refit_tree();
+  long long mask_builds_ = -1;  // bvh_.builds() when the leaf masks were made
+  // Calls f(a, b, gap), a < b, for every pair of cells that are not topological neighbours
+  // (sharing a vertex or a ring pair) whose boxes' Euclidean gap may be <= margin; gap is a
+  // lower bound of that gap. Topological neighbours are most of what boxes find on a mesh;
+  // leaf_masks_ drops them a leaf pair at a time, and each cell is tested against a whole leaf
+  // at once (leaf_gaps2).
+  template <class F>
+  void candidate_pairs(double margin, F&& f) const;
+  // Per leaf, the leaves holding topological neighbours of its cells and which of their slot
+  // pairs are not (bit i·kLeafBits + j: slot i of the first against slot j of the other),
+  // sorted by the other leaf. Redone when the tree is rebuilt.
+  static constexpr int kLeafBits = 8;
+  static_assert(Bvh<D>::kLeafSize <= kLeafBits, "leaf masks hold 8 × 8 slot pairs");
+  struct LeafMask {
+    int other = 0;
+    std::uint64_t allowed = ~std::uint64_t{0};
+  };
+  void build_leaf_masks();
+  std::vector<int> leaf_mask_offset_;
+  std::vector<LeafMask> leaf_masks_;
+
+  bool coherent_ = true;
+  double skin_ = 1.0;
+  double radius_ = -1;             // every unlisted pair was farther than this at the build (< 0: none)
+  std::vector<Tracked> listed_;    // sorted by (a, b)
+  std::vector<Tracked> unsorted_;  // scratch of the build
+  std::vector<Tracked> previous_;  // scratch of the build: the list it replaces
+  std::vector<int> bucket_;        // scratch of the build: counting sort by a
+  // The ring pairs, in topo_.ring order (sorted by (a, b)), their fields apart so that the scan
+  // of gaps reads eight bytes a pair. Pairs (a, ·) keep gap + ring_debt_[a]: a rebuild's
+  // conversion raises the cell's debt instead of touching every pair.
+  std::vector<double> ring_gap_;
+  std::vector<int> ring_fringe_;
+  std::vector<std::array<float, D>> ring_axis_;
+  std::vector<double> ring_min_;   // nc: smallest stored gap of the pairs (a, ·)
+  std::vector<double> ring_debt_;  // nc
+  std::vector<Fringe> fringe_;
+  std::vector<Vec<D>> x_built_;    // positions at the build
+  std::vector<Vec<D>> disp_;       // nv: displacement since the build, less a common centre
+  double rho_ = 0;                 // every |disp_| is <= rho_ (so every M_ab <= 2 rho_)
+  MotionBounds motion_;            // of disp_
+  std::vector<Vec<D>> step_;       // nv: motion of the current step, less a common centre
+  double step_rho_ = 0;
+  MotionBounds step_motion_;       // of step_
+  std::vector<double> edge_scratch_, vertex_scratch_;  // ring_motion's
+  long long broad_phase_runs_ = 0;
+  long long bounds_tightened_ = 0;
+  long long exact_tests_ = 0;
+};
+
+namespace prox_detail {
+// Centres the vectors v (subtracts the centre of their bounding box) and returns the radius of
+// the ball about it that holds them all (+inf if one is not finite).
+template <int D>
+double centre_and_radius(std::vector<Vec<D>>& v);
+// max |u_i - u_j| over vertices i of cell a and j of cell b.
+template <int D, int K>
+inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
+  double m2 = 0;
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < K; ++j) m2 = std::max(m2, (u[a[i]] - u[b[j]]).squaredNorm());
+  return std::sqrt(m2);
+}
+}  // namespace prox_detail
+
+template <int D, int K>
+template <class F>
+void SelfProximity<D, K>::candidate_pairs(double margin, F&& f) const {
+  const double m2 = margin * margin * (1 + 1e-6);
+  float r2 = static_cast<float>(m2);
+  if (static_cast<double>(r2) < m2) r2 = std::nextafter(r2, std::numeric_limits<float>::infinity());
+  if (!(margin >= 0)) r2 = std::numeric_limits<float>::infinity();  // NaN: everything is near
+  bvh_.self_leaf_pairs(margin, [&](int la, int lb) {
+    std::uint64_t allowed = ~std::uint64_t{0};
+    const LeafMask* first = leaf_masks_.data() + leaf_mask_offset_[la];
+    const LeafMask* last = leaf_masks_.data() + leaf_mask_offset_[la + 1];
+    const LeafMask* e = std::lower_bound(first, last, lb,
+                                         [](const LeafMask& m, int other) { return m.other < other; });
+    if (e != last && e->other == lb) allowed = e->allowed;
+    if (allowed == 0) return;
+    const int fa = bvh_.leaf_first(la), ca = bvh_.leaf_size(la);
+    const int fb = bvh_.leaf_first(lb), cb = bvh_.leaf_size(lb);
+    const unsigned lanes = (1u << cb) - 1;
+    for (int i = 0; i < ca; ++i) {
+      unsigned row = static_cast<unsigned>(allowed >> (i * kLeafBits)) & lanes;
+      if (la == lb) row &= ~((2u << i) - 1);  // within one leaf: j > i only
+      if (row == 0 || !bvh_.prim_near_leaf(fa + i, lb, r2)) continue;
+      float g2[Bvh<D>::kLeafSize];
+      row &= bvh_.leaf_gaps2(fa + i, lb, r2, g2);
+      const int p = bvh_.id(fa + i);
+      for (; row != 0; row &= row - 1) {
+        const int j = __builtin_ctz(row);
+        const int q = bvh_.id(fb + j);
+        f(std::min(p, q), std::max(p, q), std::sqrt(static_cast<double>(g2[j])));
+      }
+    }
+  });
+}
+
+template <int D, int K>
+template <class F>
+void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
+                                          double thickness, F&& f) {
+  using prox_detail::max_relative;
+  const double th = thickness > 0 ? thickness : 0.0;
+  if (!prepare_step(x0, x1, th)) {
+    // Swept boxes: the tree for the other pairs, the boxes themselves for the ring pairs.
+    candidate_pairs(th, [&](int a, int b, double) { f(a, b); });
+    for (int a = 0; a < static_cast<int>(cells_.size()); ++a)
+      for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k)
+        if (!(prox_detail::box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]) > th)) f(a, topo_.ring[k]);
+    return;
+  }
+  // Over the step, the relative motion grows by at most S_ab, that of the step.
+  for (Fringe& e : fringe_) {
+    const double s = max_relative<D, K>(step_, cells_[e.a], cells_[e.b]);
+    double lower = e.lower - snapshot_motion(e, x0);
+    if (lower - s > th) continue;
+    if (step_candidate(e.a, e.b, &e, x0, th, s, lower)) f(e.a, e.b);
+  }
+  auto tracked = [&](int a, int b, double& gap, double debt) {
+    const double m0 = relative_motion(a, b);
+    const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
+    double lower = gap - debt - m0;
+    if (lower - s > th) return;
+    if (step_candidate(a, b, nullptr, x0, th, s, lower)) f(a, b);
+    gap = std::max(gap, lower - m0 + debt);
+  };
+  for (Tracked& p : listed_) {
+    if (p.fringe >= 0 || p.gap - (motion_.reach[p.a] + motion_.reach[p.b]) -
+                                 (step_motion_.reach[p.a] + step_motion_.reach[p.b]) > th)
+      continue;
+    tracked(p.a, p.b, p.gap, 0.0);
+  }
+  const std::vector<double>& ring_m = ring_bounds();
+  for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
+    const double debt = ring_debt_[a], reach = ring_m[a] + step_motion_.ring[a];
+    if (ring_min_[a] - debt - reach > th) continue;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
+      double& gap = ring_gap_[k];  // +inf in the fringe
+      if (gap - debt - reach <= th) tracked(a, topo_.ring[k], gap, debt);
+      lowest = std::min(lowest, gap);
+    }
+    ring_min_[a] = lowest;
+  }
+}
+
+}  // namespace s4d
