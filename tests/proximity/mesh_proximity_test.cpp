@@ -229,6 +229,107 @@ TEST(MeshProximity, CoherentQueriesEqualFreshOnesAlongAMotion) {
   check_coherent_sequence<4, 2>(14);
 }
 
+// A long run on a deforming grid (the ring pairs dominate there): every query equals a fresh one,
+// with and without ring pairs, through list rebuilds, fringe evictions and the settling of large
+// ring debts; a common translation costs no rebuild at all.
+TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
+  const int n = 14;
+  std::vector<Cell<3>> cells;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j;
+      cells.push_back({a, a + 1, a + n + 1});
+      cells.push_back({a, a + n + 1, a + n});
+    }
+  auto grid = [&](double phase) {
+    std::vector<Vec4> x;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u = double(i) / (n - 1), v = double(j) / (n - 1);
+        x.push_back(Vec4(u + 0.08 * std::sin(7 * v + 2 * u + phase), v + 0.08 * std::sin(6 * u - 3 * v + phase),
+                         0.25 * std::sin(9 * u + phase) * std::cos(8 * v), 0.25 * std::cos(7 * u - 5 * v) * std::sin(6 * v + u + phase)));
+      }
+    return x;
+  };
+  const double delta = 0.8 / (n - 1);
+  SelfProximity<4, 3> coherent(cells);
+  int answered = 0;
+  EXPECT_GT(coherent.ring_pairs(), 0u);
+  std::vector<ProximityPair<4>> got, want;
+  for (int step = 0; step < 400; ++step) {
+    const auto x = grid(0.01 * step);
+    const RingPairs ring = step % 5 == 4 ? RingPairs::kExclude : RingPairs::kInclude;
+    coherent.pairs_within(x, delta, got, ring);
+    SelfProximity<4, 3> fresh(cells);
+    fresh.set_temporal_coherence(false);
+    fresh.pairs_within(x, delta, want, ring);
+    ASSERT_EQ(got.size(), want.size()) << "step " << step;
+    for (std::size_t i = 0; i < want.size(); ++i)
+      ASSERT_EQ(std::make_pair(got[i].a, got[i].b), std::make_pair(want[i].a, want[i].b)) << "step " << step;
+    answered += !want.empty();
+  }
+  EXPECT_GT(answered, 300);
+  // Excluding ring pairs leaves out exactly the pairs joined by a mesh edge.
+  const auto x = grid(0.3);
+  SelfProximity<4, 3> fresh(cells);
+  fresh.set_temporal_coherence(false);
+  fresh.pairs_within(x, delta, want, RingPairs::kInclude);
+  fresh.pairs_within(x, delta, got, RingPairs::kExclude);
+  std::size_t ring_answers = 0;
+  for (const auto& p : want) {
+    const auto& t = coherent.topology();
+    ring_answers += std::binary_search(t.ring.begin() + t.ring_offset[p.a],
+                                       t.ring.begin() + t.ring_offset[p.a + 1], p.b);
+  }
+  EXPECT_GT(ring_answers, 0u);
+  EXPECT_EQ(got.size(), want.size() - ring_answers);
+  // Moving the whole surface rigidly by far more than δ rebuilds nothing.
+  coherent.pairs_within(x, delta, got);
+  const long long runs = coherent.broad_phase_runs();
+  for (int step = 1; step <= 20; ++step) {
+    auto moved = x;
+    for (auto& v : moved) v += Vec4(0.3, -0.2, 0.1, 0.25) * step;
+    coherent.pairs_within(moved, delta, got);
+    EXPECT_EQ(got.size(), want.size());
+  }
+  EXPECT_EQ(coherent.broad_phase_runs(), runs);
+}
+
+// The float boxes' gaps the broad phase prunes with never exceed the double boxes' gaps.
+TEST(MeshProximity, FloatLeafGapsAreLowerBounds) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1, 1), scale(1e-3, 1e3);
+  for (int round = 0; round < 20; ++round) {
+    const double s = scale(rng);
+    std::vector<Box<4>> boxes(40);
+    for (auto& b : boxes) {
+      const Vec4 c(s * u(rng), s * u(rng), s * u(rng), s * u(rng));
+      b.add(c);
+      b.add(c + 0.05 * s * Vec4(u(rng), u(rng), u(rng), u(rng)));
+    }
+    Bvh<4> bvh;
+    bvh.build(boxes);
+    for (int l = 0; l < bvh.leaf_count(); ++l)
+      for (int k = 0; k < static_cast<int>(boxes.size()); ++k) {
+        float g2[Bvh<4>::kLeafSize];
+        bvh.leaf_gaps2(k, l, std::numeric_limits<float>::infinity(), g2);
+        const Box<4>& a = boxes[bvh.id(k)];
+        for (int j = 0; j < bvh.leaf_size(l); ++j) {
+          const Box<4>& b = boxes[bvh.id(bvh.leaf_first(l) + j)];
+          double exact = 0;
+          for (int axis = 0; axis < 4; ++axis) {
+            const double g = std::max({b.lo[axis] - a.hi[axis], a.lo[axis] - b.hi[axis], 0.0});
+            exact += g * g;
+          }
+          EXPECT_LE(static_cast<double>(g2[j]), exact);
+          // The leaf's box holds this one: the cell is near it at any radius the pair is within
+          // (the query's radius carries the same 1e-6 of slack).
+          EXPECT_TRUE(bvh.prim_near_leaf(k, l, static_cast<float>(exact * (1 + 1e-6)) * (1 + 1e-7f)));
+        }
+      }
+  }
+}
+
 TEST(MeshProximity, BadInputIsAClearError) {
   EXPECT_THROW((SelfProximity<3, 3>({{0, 1, -2}})), Error);
   SelfProximity<3, 3> q({{0, 1, 5}});
