@@ -3,6 +3,7 @@
 // then the exact kernels of closest_points.hpp / continuous_collision.hpp).
 #pragma once
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <string>
@@ -117,11 +118,30 @@ void narrow_impact(const Simplex<D, KA>& a0, const Simplex<D, KA>& a1, const Sim
   }
 }
 
+// Sorts pairs by (a, b). A pair carries its closest points (some 130 bytes): the sort runs on
+// (key, index) and the pairs move once, through `scratch`; nothing moves when already sorted.
+template <int D>
+void sort_pairs(std::vector<ProximityPair<D>>& out, std::vector<std::pair<std::uint64_t, int>>& keys,
+                std::vector<ProximityPair<D>>& scratch) {
+  auto key = [](const ProximityPair<D>& p) {
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32 | static_cast<std::uint32_t>(p.b);
+  };
+  bool sorted = true;
+  for (std::size_t i = 1; i < out.size() && sorted; ++i) sorted = key(out[i - 1]) < key(out[i]);
+  if (sorted) return;
+  keys.resize(out.size());
+  for (std::size_t i = 0; i < out.size(); ++i) keys[i] = {key(out[i]), static_cast<int>(i)};
+  std::sort(keys.begin(), keys.end());
+  scratch.resize(out.size());
+  for (std::size_t i = 0; i < out.size(); ++i) scratch[i] = out[keys[i].second];
+  out.swap(scratch);
+}
+
 template <int D>
 void sort_pairs(std::vector<ProximityPair<D>>& out) {
-  std::sort(out.begin(), out.end(), [](const ProximityPair<D>& x, const ProximityPair<D>& y) {
-    return x.a != y.a ? x.a < y.a : x.b < y.b;
-  });
+  std::vector<std::pair<std::uint64_t, int>> keys;
+  std::vector<ProximityPair<D>> scratch;
+  sort_pairs(out, keys, scratch);
 }
 
 }  // namespace s4d::prox_detail

@@ -17,17 +17,6 @@ namespace {
 constexpr double kPromoteMargins = 1.5;
 constexpr double kEvictMargins = 2.0;
 
-template <int D, int K>
-void cell_reach(const std::vector<Vec<D>>& u, const std::vector<Cell<K>>& cells,
-                std::vector<double>& reach) {
-  reach.resize(cells.size());
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    double m2 = 0;
-    for (int i : cells[c]) m2 = std::max(m2, u[i].squaredNorm());
-    reach[c] = std::sqrt(m2);
-  }
-}
-
 }  // namespace
 
 namespace prox_detail {
@@ -59,7 +48,7 @@ SelfProximity<D, K>::SelfProximity(std::vector<Cell<K>> cells)
     : cells_(std::move(cells)), max_index_(max_index<K>(cells_)), topo_(cells_, max_index_ + 1) {
   ring_gap_.assign(topo_.ring.size(), 0.0);
   ring_fringe_.assign(topo_.ring.size(), -1);
-  ring_axis_.assign(topo_.ring.size(), {});
+  ring_hints_.assign(topo_.ring.size(), {});
   ring_min_.assign(cells_.size(), 0.0);
   ring_debt_.assign(cells_.size(), 0.0);
 }
@@ -138,20 +127,18 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
   if (unsorted_.capacity() == 0) unsorted_.reserve(4 * cells_.size());
   // The list keeps the Euclidean gap of the cells' boxes, the cheapest true bound: tighter
   // bounds are worked out lazily, by the queries, for the pairs that come near their margin.
-  candidate_pairs(radius_, [&](int a, int b, double gap) { unsorted_.push_back({a, b, gap, -1}); });
+  candidate_pairs(radius_, [&](int a, int b, double gap) { unsorted_.push_back({a, b, gap, {}}); });
   if (!measured) {
     // Nothing to carry over (first build, or after non-finite positions): every bound restarts.
-    for (const Fringe& f : fringe_)
-      if (f.ring) ring_fringe_[f.owner] = -1;
+    for (const Fringe& f : fringe_) ring_fringe_[f.ring] = -1;
     fringe_.clear();
   }
   // Counting sort by a, then b within each a (a handful): linear, unlike a comparison sort.
   bucket_.assign(cells_.size() + 1, 0);
   for (const Tracked& p : unsorted_) ++bucket_[p.a + 1];
   for (std::size_t c = 1; c < bucket_.size(); ++c) bucket_[c] += bucket_[c - 1];
-  // The old list (sorted too) hands its bounds on to the pairs that stay, converted to the new
-  // reference (a bound loses M_ab of the displacements measured now, disp_), and its fringe
-  // entries; a fringe pair that left the list is farther than the new radius, and goes.
+  // The old list (sorted too) hands its bounds and hints on to the pairs that stay, converted to
+  // the new reference: a bound loses M_ab of the displacements measured now (disp_).
   listed_.swap(previous_);
   if (!measured) previous_.clear();
   if (listed_.capacity() < unsorted_.size()) listed_.reserve(unsorted_.capacity());
@@ -167,38 +154,21 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
       Tracked& p = listed_[k];
       while (old != previous_.cend() && (old->a < p.a || (old->a == p.a && old->b < p.b))) ++old;
       if (old == previous_.cend() || old->a != p.a || old->b != p.b) continue;
-      if (old->fringe >= 0) {
-        p.fringe = old->fringe;
-        fringe_[p.fringe].owner = static_cast<int>(k);
-        fringe_[p.fringe].kept = true;
-      } else if (old->gap - (motion_.reach[p.a] + motion_.reach[p.b]) > p.gap) {
+      p.hints = old->hints;
+      if (old->gap - 2 * motion_.rho > p.gap)
+        p.gap = old->gap - 2 * motion_.rho;
+      else if (old->gap > p.gap)
         p.gap = std::max(p.gap, old->gap - relative_motion(p.a, p.b));
-      }
     }
     begin = end;
-  }
-  for (std::size_t i = 0; i < fringe_.size();) {
-    Fringe& f = fringe_[i];
-    if (f.ring || f.kept) {
-      f.kept = false;
-      ++i;
-      continue;
-    }
-    // Its owner index is the old list's: only the entry moved into its place is re-pointed.
-    if (i + 1 != fringe_.size()) {
-      fringe_[i] = fringe_.back();
-      if (fringe_[i].ring || fringe_[i].kept) fringe_of(fringe_[i].ring, fringe_[i].owner) = static_cast<int>(i);
-    }
-    fringe_.pop_back();
   }
   // Ring pairs: the same conversion with their strain bound, which is the same for all pairs of
   // a cell, so it is kept as the cell's debt (a cost per cell, not per pair); from their boxes
   // when there is nothing to convert from.
   const int nc = static_cast<int>(cells_.size());
   if (measured) {
-    const std::vector<double>& ring_m = ring_bounds();
     for (int a = 0; a < nc; ++a) {
-      ring_debt_[a] += ring_m[a];
+      ring_debt_[a] += ring_bound(motion_, a);
       if (ring_debt_[a] < 16 * radius_) continue;
       // Settle a large debt into the gaps, so that it never costs precision.
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) ring_gap_[k] -= ring_debt_[a];
@@ -210,7 +180,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
         ring_gap_[k] = box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]);
-        ring_axis_[k] = {};
+        ring_hints_[k] = {};
         lowest = std::min(lowest, ring_gap_[k]);
       }
       ring_min_[a] = lowest;
@@ -219,59 +189,49 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
   }
   x_built_.assign(x.begin(), x.end());
   disp_.assign(x.size(), Vec<D>::Zero());
-  rho_ = 0;
-  motion_.reach.assign(cells_.size(), 0.0);
-  motion_.ring.assign(cells_.size(), 0.0);
-  motion_.ring_valid = true;
+  motion_.reset(&disp_, 0.0);
 }
 
 // [SECTION] Motion since the build
 
 template <int D, int K>
-void SelfProximity<D, K>::ring_motion(const std::vector<Vec<D>>& u, std::vector<double>& out) {
-  // L_v: the largest edge difference at v; then over v and its neighbours; then 3 × over a cell.
-  std::vector<double>& at_vertex = edge_scratch_;
-  std::vector<double>& around = vertex_scratch_;
-  at_vertex.assign(topo_.vertex_count, 0.0);
+double SelfProximity<D, K>::ring_bound(MotionBounds& m, int a) {
+  if (m.ring_valid) return m.ring[a];
+  // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
+  // good share of them (measured: a lazy cell-by-cell version cost more on both benchmarks).
+  const int nv = topo_.vertex_count, nc = static_cast<int>(cells_.size());
+  const std::vector<Vec<D>>& u = *m.u;
+  m.edge_max.assign(nv, 0.0);
   for (const auto& e : topo_.edges) {
     const double d = (u[e[0]] - u[e[1]]).squaredNorm();
-    at_vertex[e[0]] = std::max(at_vertex[e[0]], d);
-    at_vertex[e[1]] = std::max(at_vertex[e[1]], d);
+    m.edge_max[e[0]] = std::max(m.edge_max[e[0]], d);
+    m.edge_max[e[1]] = std::max(m.edge_max[e[1]], d);
   }
-  around.resize(topo_.vertex_count);
-  for (int v = 0; v < topo_.vertex_count; ++v) {
-    double m = at_vertex[v];
+  m.around.resize(nv);
+  for (int v = 0; v < nv; ++v) {
+    double w = m.edge_max[v];
     for (int n = topo_.neighbour_offset[v]; n < topo_.neighbour_offset[v + 1]; ++n)
-      m = std::max(m, at_vertex[topo_.neighbours[n]]);
-    around[v] = m;
+      w = std::max(w, m.edge_max[topo_.neighbours[n]]);
+    m.around[v] = w;
   }
-  out.resize(cells_.size());
-  for (std::size_t c = 0; c < cells_.size(); ++c) {
-    double m = 0;
-    for (int v : cells_[c]) m = std::max(m, around[v]);
-    out[c] = 3 * std::sqrt(m);
+  m.ring.resize(nc);
+  for (int c = 0; c < nc; ++c) {
+    double w = 0;
+    for (int v : cells_[c]) w = std::max(w, m.around[v]);
+    m.ring[c] = 3 * std::sqrt(w);
   }
+  m.ring_valid = true;
+  return m.ring[a];
 }
 
 template <int D, int K>
 bool SelfProximity<D, K>::measure(std::span<const Vec<D>> x) {
-  motion_.ring_valid = false;
+  motion_.reset(&disp_, std::numeric_limits<double>::infinity());
   if (!coherent_ || radius_ < 0 || x_built_.size() != x.size()) return false;
   disp_.resize(x.size());
   for (std::size_t v = 0; v < x.size(); ++v) disp_[v] = x[v] - x_built_[v];
-  rho_ = centre_and_radius<D>(disp_);
-  if (!std::isfinite(rho_)) return false;  // a non-finite vertex: rebuild (its box is all space)
-  cell_reach<D, K>(disp_, cells_, motion_.reach);
-  return true;
-}
-
-template <int D, int K>
-const std::vector<double>& SelfProximity<D, K>::ring_bounds() {
-  if (!motion_.ring_valid) {
-    ring_motion(disp_, motion_.ring);
-    motion_.ring_valid = true;
-  }
-  return motion_.ring;
+  motion_.rho = centre_and_radius<D>(disp_);
+  return std::isfinite(motion_.rho);  // a non-finite vertex: rebuild (its box is all space)
 }
 
 template <int D, int K>
@@ -279,20 +239,7 @@ double SelfProximity<D, K>::relative_motion(int a, int b) const {
   return max_relative<D, K>(disp_, cells_[a], cells_[b]);
 }
 
-// [SECTION] The fringe
-
-template <int D, int K>
-double SelfProximity<D, K>::snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const {
-  std::array<Vec<D>, 2 * K> d;
-  for (int i = 0; i < K; ++i) {
-    d[i] = x[cells_[f.a][i]] - f.x0[i];
-    d[K + i] = x[cells_[f.b][i]] - f.x0[K + i];
-  }
-  double m2 = 0;
-  for (int i = 0; i < K; ++i)
-    for (int j = K; j < 2 * K; ++j) m2 = std::max(m2, (d[i] - d[j]).squaredNorm());
-  return m2 == m2 ? std::sqrt(m2) : std::numeric_limits<double>::infinity();
-}
+// [SECTION] Testing a pair, and the fringe
 
 template <int D, int K>
 double SelfProximity<D, K>::axis_bound(int a, int b, const std::array<float, D>& axis,
@@ -313,93 +260,93 @@ void store_axis(const Vec<D>& n, std::array<float, D>& axis) {
 }  // namespace
 
 template <int D, int K>
-bool SelfProximity<D, K>::test_fringe(Fringe& f, std::span<const Vec<D>> x, double delta,
-                                      ClosestPoints<D>& cp) {
+double SelfProximity<D, K>::test_pair(int a, int b, Hints& h, std::span<const Vec<D>> x,
+                                      double delta, bool& within, ClosestPoints<D>& cp) {
+  within = false;
+  // A pair last found within delta (resting contact) almost never proves farther now: go
+  // straight to the exact distance. Others first try the gap along their axis.
+  if (!h.touching) {
+    ++bounds_tightened_;
+    const double lower = axis_bound(a, b, h.axis, x);
+    if (lower > delta) return lower;
+  }
+  ++exact_tests_;
+  unsigned faces = h.faces;
+  cp = closest_points_warm<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), faces);
+  h.faces = static_cast<std::uint8_t>(faces);
+  h.touching = within = cp.distance <= delta;
+  store_axis<D>(Vec<D>(cp.p - cp.q), h.axis);
+  return cp.distance == cp.distance ? cp.distance : -std::numeric_limits<double>::infinity();
+}
+
+template <int D, int K>
+double SelfProximity<D, K>::snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const {
+  std::array<Vec<D>, 2 * K> d;
+  for (int i = 0; i < K; ++i) {
+    d[i] = x[cells_[f.a][i]] - f.x0[i];
+    d[K + i] = x[cells_[f.b][i]] - f.x0[K + i];
+  }
+  double m2 = 0;
+  for (int i = 0; i < K; ++i)
+    for (int j = K; j < 2 * K; ++j) m2 = std::max(m2, (d[i] - d[j]).squaredNorm());
+  return m2 == m2 ? std::sqrt(m2) : std::numeric_limits<double>::infinity();
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::take_snapshot(Fringe& f, std::span<const Vec<D>> x) const {
   for (int i = 0; i < K; ++i) {
     f.x0[i] = x[cells_[f.a][i]];
     f.x0[K + i] = x[cells_[f.b][i]];
   }
-  // A pair last found within delta (resting contact) almost never proves farther now: go
-  // straight to the exact distance. Others first try the gap along their axis.
-  if (!f.touching) {
-    ++bounds_tightened_;
-    const double lower = axis_bound(f.a, f.b, f.axis, x);
-    if (lower > delta) {
-      f.lower = lower;
-      return false;
-    }
-  }
-  ++exact_tests_;
-  unsigned faces = f.faces;
-  cp = closest_points_warm<D, K, K>(gather<D, K>(x, cells_[f.a]), gather<D, K>(x, cells_[f.b]), faces);
-  f.faces = static_cast<std::uint8_t>(faces);
-  f.touching = cp.distance <= delta;
-  f.lower = cp.distance == cp.distance ? cp.distance : -std::numeric_limits<double>::infinity();
-  store_axis<D>(Vec<D>(cp.p - cp.q), f.axis);
-  return f.touching;
 }
 
 template <int D, int K>
-bool SelfProximity<D, K>::examine(bool ring, int owner, int a, int b, std::span<const Vec<D>> x,
-                                  double m, double delta, ClosestPoints<D>& cp) {
+bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<D>> x, double m,
+                                       double delta, ClosestPoints<D>& cp) {
   // The separating axes first (the cached one, then all): most pairs their bound let through
-  // are well apart (a bound measured from the build loses twice their motion), and stay in the
-  // cheap tier.
+  // are well apart (a bound measured from the build loses twice their motion), and stay out of
+  // the fringe.
   ++bounds_tightened_;
-  std::array<float, D>& axis = axis_of(ring, owner);
-  double lower = axis_bound(a, b, axis, x);
+  Hints& h = ring_hints_[k];
+  double lower = axis_bound(a, b, h.axis, x);
   if (!(lower > kPromoteMargins * delta)) {
     Vec<D> best = Vec<D>::Zero();
     lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x, cells_[a]),
                                                           gather<D, K>(x, cells_[b]),
                                                           kEvictMargins * delta, &best));
-    store_axis<D>(best, axis);
+    store_axis<D>(best, h.axis);
   }
-  double& gap = gap_of(ring, owner);
   if (lower > kPromoteMargins * delta) {
-    gap = std::max(gap, lower - m + (ring ? ring_debt_[a] : 0.0));
+    ring_gap_[k] = std::max(ring_gap_[k], lower - m + ring_debt_[a]);
     return false;
   }
-  fringe_of(ring, owner) = static_cast<int>(fringe_.size());
-  if (ring) gap = std::numeric_limits<double>::infinity();
+  ring_fringe_[k] = static_cast<int>(fringe_.size());
+  ring_gap_[k] = std::numeric_limits<double>::infinity();
   Fringe& f = fringe_.emplace_back();
   f.a = a;
   f.b = b;
-  f.ring = ring;
-  f.owner = owner;
-  f.axis = axis;
-  if (lower > delta) {
-    for (int i = 0; i < K; ++i) {
-      f.x0[i] = x[cells_[a][i]];
-      f.x0[K + i] = x[cells_[b][i]];
-    }
-    f.lower = lower;
-    return false;
-  }
-  return test_fringe(f, x, delta, cp);
-}
-
-template <int D, int K>
-void SelfProximity<D, K>::remove_fringe(std::size_t i) {
-  fringe_of(fringe_[i].ring, fringe_[i].owner) = -1;
-  if (i + 1 != fringe_.size()) {
-    fringe_[i] = fringe_.back();
-    fringe_of(fringe_[i].ring, fringe_[i].owner) = static_cast<int>(i);
-  }
-  fringe_.pop_back();
+  f.ring = k;
+  f.hints = h;
+  take_snapshot(f, x);
+  f.lower = lower;
+  if (lower > delta) return false;
+  bool within = false;
+  f.lower = std::max(lower, test_pair(a, b, f.hints, x, delta, within, cp));
+  return within;
 }
 
 template <int D, int K>
 void SelfProximity<D, K>::evict(std::size_t i, double lower) {
   const Fringe& f = fringe_[i];
-  double& gap = gap_of(f.ring, f.owner);
-  gap = lower - relative_motion(f.a, f.b);
-  axis_of(f.ring, f.owner) = f.axis;
-  if (f.ring) {
-    gap += ring_debt_[f.a];
-    ring_min_[f.a] = std::min(ring_min_[f.a], gap);
+  ring_gap_[f.ring] = lower - relative_motion(f.a, f.b) + ring_debt_[f.a];
+  ring_min_[f.a] = std::min(ring_min_[f.a], ring_gap_[f.ring]);
+  ring_hints_[f.ring] = f.hints;
+  ring_fringe_[f.ring] = -1;
+  if (i + 1 != fringe_.size()) {
+    fringe_[i] = fringe_.back();
+    ring_fringe_[fringe_[i].ring] = static_cast<int>(i);
   }
-  remove_fringe(i);
+  fringe_.pop_back();
 }
 
 // [SECTION] Queries
@@ -427,47 +374,48 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
             narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b,
                                    delta, out);
         }
-    sort_pairs(out);
+    sort_pairs(out, sort_keys_, sort_scratch_);
     return;
   }
   const bool measured = measure(x);
-  if (!(measured && radius_ - 2 * rho_ >= delta)) build_list(x, delta, measured);
+  if (!(measured && radius_ - 2 * motion_.rho >= delta)) build_list(x, delta, measured);
   ClosestPoints<D> cp;
-  for (std::size_t i = 0; i < fringe_.size();) {
-    Fringe& f = fringe_[i];
-    if (f.ring && !with_ring) {
-      ++i;
-      continue;
-    }
-    const double lower = f.lower - snapshot_motion(f, x);
-    if (lower > delta) {
-      if (lower > kEvictMargins * delta) {
-        evict(i, lower);
-        continue;  // another entry moved into i
-      }
-    } else if (test_fringe(f, x, delta, cp)) {
-      out.push_back({f.a, f.b, cp});
-    }
-    ++i;
-  }
-  for (int k = 0; k < static_cast<int>(listed_.size()); ++k) {
-    const Tracked& p = listed_[k];
-    if (p.fringe >= 0 || p.gap - (motion_.reach[p.a] + motion_.reach[p.b]) > delta) continue;
+  bool within = false;
+  for (Tracked& p : listed_) {
+    if (p.gap - 2 * motion_.rho > delta) continue;
     const double m = relative_motion(p.a, p.b);
-    if (p.gap - m <= delta && examine(false, k, p.a, p.b, x, m, delta, cp))
-      out.push_back({p.a, p.b, cp});
+    if (p.gap - m > delta) continue;
+    p.gap = std::max(p.gap, test_pair(p.a, p.b, p.hints, x, delta, within, cp) - m);
+    if (within) out.push_back({p.a, p.b, cp});
   }
   if (with_ring) {
-    const std::vector<double>& ring_m = ring_bounds();
+    // The list's answers are sorted; the ring's go after them, and the whole is sorted below.
+    for (std::size_t i = 0; i < fringe_.size();) {
+      Fringe& f = fringe_[i];
+      const double lower = f.lower - snapshot_motion(f, x);
+      if (lower > delta) {
+        if (lower > kEvictMargins * delta) {
+          evict(i, lower);
+          continue;  // another entry moved into i
+        }
+      } else {
+        f.lower = test_pair(f.a, f.b, f.hints, x, delta, within, cp);
+        take_snapshot(f, x);
+        if (within) out.push_back({f.a, f.b, cp});
+      }
+      ++i;
+    }
     for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
       const double debt = ring_debt_[a];
-      if (ring_min_[a] - debt - ring_m[a] > delta) continue;
+      if (ring_min_[a] - debt - 2 * motion_.rho > delta) continue;
+      const double ring_m = ring_bound(motion_, a);
+      if (ring_min_[a] - debt - ring_m > delta) continue;
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
-        if (ring_gap_[k] - debt - ring_m[a] <= delta) {  // never in the fringe (+inf)
+        if (ring_gap_[k] - debt - ring_m <= delta) {  // never in the fringe (+inf)
           const int b = topo_.ring[k];
           const double m = relative_motion(a, b);
-          if (ring_gap_[k] - debt - m <= delta && examine(true, k, a, b, x, m, delta, cp))
+          if (ring_gap_[k] - debt - m <= delta && examine_ring(k, a, b, x, m, delta, cp))
             out.push_back({a, b, cp});
         }
         lowest = std::min(lowest, ring_gap_[k]);
@@ -475,28 +423,20 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       ring_min_[a] = lowest;
     }
   }
-  sort_pairs(out);
+  sort_pairs(out, sort_keys_, sort_scratch_);
 }
 
 template <int D, int K>
-bool SelfProximity<D, K>::step_candidate(int a, int b, Fringe* f,
-                                         std::span<const Vec<D>> x0, double thickness, double s,
-                                         double& lower) {
+bool SelfProximity<D, K>::step_candidate(int a, int b, const Hints& h, std::span<const Vec<D>> x0,
+                                         double thickness, double s, double& lower) {
   // Tighten the bound at x0 before handing the pair out: a pair that only looked close (its
   // bound was the gap of boxes) is then left out of this step and of the next few.
   ++bounds_tightened_;
-  if (f) lower = std::max(lower, axis_bound(a, b, f->axis, x0));
+  lower = std::max(lower, axis_bound(a, b, h.axis, x0));
   if (!(lower - s > thickness))
     lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x0, cells_[a]),
                                                           gather<D, K>(x0, cells_[b]),
                                                           1.5 * (thickness + s)));
-  if (f) {  // a new snapshot at x0
-    for (int i = 0; i < K; ++i) {
-      f->x0[i] = x0[cells_[a][i]];
-      f->x0[K + i] = x0[cells_[b][i]];
-    }
-    f->lower = lower;
-  }
   return !(lower - s > thickness);  // NaN: a candidate
 }
 
@@ -507,21 +447,18 @@ bool SelfProximity<D, K>::prepare_step(std::span<const Vec<D>> x0, std::span<con
   check(x1.size());
   step_.resize(x0.size());
   for (std::size_t v = 0; v < x0.size(); ++v) step_[v] = x1[v] - x0[v];
-  step_rho_ = centre_and_radius<D>(step_);
-  if (coherent_ && std::isfinite(step_rho_)) {
+  const double step_rho = centre_and_radius<D>(step_);
+  step_motion_.reset(&step_, step_rho);
+  if (coherent_ && std::isfinite(step_rho)) {
     const bool have = measure(x0);
-    bool listed = have && radius_ - 2 * rho_ - 2 * step_rho_ >= thickness;
+    bool listed = have && radius_ - 2 * motion_.rho - 2 * step_rho >= thickness;
     // A list for this step's motion pays off when the motion is small next to the thickness;
     // a few fast cells would inflate it for every cell, and then the swept tree is better.
-    if (!listed && 2 * step_rho_ <= thickness) {
-      build_list(x0, thickness + 2 * step_rho_, have);
+    if (!listed && 2 * step_rho <= thickness) {
+      build_list(x0, thickness + 2 * step_rho, have);
       listed = true;
     }
-    if (listed) {
-      cell_reach<D, K>(step_, cells_, step_motion_.reach);
-      ring_motion(step_, step_motion_.ring);
-      return true;
-    }
+    if (listed) return true;
   }
   ++broad_phase_runs_;
   swept_boxes<D, K>(x0, x1, cells_, boxes_);

@@ -26,20 +26,22 @@ enum class RingPairs { kInclude, kExclude };
 //
 // Temporal coherence (on by default) rests on one fact: a distance is 1-Lipschitz in relative
 // motion. If the vertices moved by Δ_v since some time t0, dist_ab(t) >= dist_ab(t0) - M_ab with
-// M_ab = max |Δ_i - Δ_j| over the vertices i of a and j of b. Three tiers of pairs use it:
-//  - the fringe: pairs that came near the margin. Each keeps a lower bound of its distance at
-//    its own snapshot (its six vertices' positions then), so M_ab is their exact relative motion
-//    since: a pair is looked at again only once it has really moved by its slack.
-//  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh). Each keeps
-//    g = (a lower bound at some t0) - M_ab(t0) with motion measured from the last build, so that
-//    dist_ab(t) >= g - M_ab(t); the strain of the edges around a cell bounds M_ab for all its
-//    ring partners at once (three edges join any vertex of a to any of b), so far pairs cost a
-//    comparison per cell.
-//  - the list: every other non-adjacent pair whose boxes were within R = margin · (1 + skin) at
-//    the last build, with the same kind of bound. An unlisted pair is still farther than R - 2ρ,
-//    where ρ is the radius of a ball holding every displacement since the build (net, not path
-//    length; a common translation costs nothing). The list is rebuilt, keeping what it knew of
-//    the pairs that stay, when R - 2ρ falls below the margin.
+// M_ab = max |Δ_i - Δ_j| over the vertices i of a and j of b. Pairs are tracked in two sets:
+//  - the list: every non-adjacent pair that is not a ring pair (below) and whose boxes were
+//    within R = margin · (1 + skin) at the last build. Each keeps g = (a lower bound at some t0)
+//    - M_ab(t0), with motion measured from the build, so that dist_ab(t) >= g - M_ab(t). An
+//    unlisted pair is still farther than R - 2ρ, where ρ is the radius of a ball holding every
+//    displacement since the build (net, not path length; a common translation costs nothing).
+//    The list is rebuilt, keeping what it knew of the pairs that stay, when R - 2ρ falls below
+//    the margin.
+//  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh), on a fine mesh
+//    most of what any query near the mesh's own spacing finds. The same kind of bound; the
+//    strain of the edges around a cell bounds M_ab for all its ring partners at once (three
+//    edges join any vertex of a to any of b), so that far pairs cost a comparison per cell.
+//    Ring pairs that come near the margin move to the fringe, where each keeps a lower bound of
+//    its distance at its own snapshot (its six vertices' positions then): M_ab is then their
+//    exact relative motion since, and a pair is looked at again only once it has really moved
+//    by its slack.
 // Answers are exactly those of a fresh broad phase; only their cost changes.
 template <int D, int K>
 class SelfProximity {
@@ -83,44 +85,54 @@ class SelfProximity {
   const Bvh<D>& bvh() const { return bvh_; }
 
  private:
-  // A listed pair: dist_ab(t) >= gap - M_ab(t), M over the displacement since the build. (Ring
-  // pairs keep the same fields in ring_gap_, ring_fringe_ and ring_axis_.)
-  struct Tracked {
-    int a = 0, b = 0;
-    double gap = 0;
-    int fringe = -1;  // its entry in fringe_ while it is there (then gap is unused)
+  // What a query knows of one pair beyond its bound, to re-prove it cheaply.
+  struct Hints {
+    bool touching = false;   // within the margin at its last exact test (a resting contact)
+    std::uint8_t faces = 0;  // face pair of its last exact answer (face_pair_code): warm start
     // The separating direction last found for it (zero: none): motion turns it slowly, so the
     // gap of the cells' projections on it stays a tight lower bound, six dot products against
     // the forty of the separating axes (and more of the exact distance).
     std::array<float, D> axis{};
   };
-  // A pair near the margin: dist_ab(t) >= lower - (its vertices' relative motion since x0).
+  // A listed pair: dist_ab(t) >= gap - M_ab(t), M over the displacement since the build. (Ring
+  // pairs keep their gaps and hints in ring_gap_ and ring_hints_.)
+  struct Tracked {
+    int a = 0, b = 0;
+    double gap = 0;
+    Hints hints;
+  };
+  // A ring pair near the margin: dist_ab(t) >= lower - (its vertices' relative motion since x0).
   struct Fringe {
     int a = 0, b = 0;
-    bool ring = false;  // its owner is ring pair `owner`, else listed_[owner]
-    bool touching = false;  // within the margin at its last exact test (a resting contact)
-    bool kept = false;      // scratch of a list build: its pair stays listed
-    std::uint8_t faces = 0;  // face pair of its last exact answer (face_pair_code): warm start
-    int owner = 0;
+    int ring = 0;  // its index among the ring pairs
     double lower = 0;
     std::array<Vec<D>, 2 * K> x0;  // the snapshot: a's vertices, then b's
-    std::array<float, D> axis{};   // as Tracked::axis; from its last exact closest points
+    Hints hints;
   };
-  // The motion bounds of one displacement field u (nv): per cell, the largest |u| of its vertices
-  // (so M_ab <= reach[a] + reach[b]) and a bound of M_ab over its ring partners (ring[a]).
+  // The motion bounds of one displacement field u (nv, centred), coarse to fine, the finer ones
+  // worked out only when a coarser one does not settle a pair: every |u| <= rho (so every
+  // M_ab <= 2 rho); per cell, a bound of M_ab over all its ring partners (ring_bound); per pair,
+  // M_ab itself (max_relative).
   struct MotionBounds {
-    std::vector<double> reach, ring;
+    const std::vector<Vec<D>>* u = nullptr;
+    double rho = 0;
+    std::vector<double> ring;             // per cell, once ring_valid
+    std::vector<double> edge_max, around;  // scratch: per vertex, over its edges; with neighbours'
     bool ring_valid = false;
+    void reset(const std::vector<Vec<D>>* field, double radius) {
+      u = field;
+      rho = radius;
+      ring_valid = false;
+    }
   };
+  // 3 × the largest |u_p - u_q| over the edges at cell a's vertices and their neighbours: three
+  // such edges join any vertex of a to any vertex of a ring partner.
+  double ring_bound(MotionBounds& m, int a);
 
   void check(std::size_t n) const;
-  // Displacements since the build for x (disp_, rho_, motion_.reach); false when there is no
-  // build to compare with or x is not comparable (sizes, non-finite), so the caller rebuilds.
+  // Displacements since the build for x (disp_, motion_); false when there is no build to
+  // compare with or x is not comparable (sizes, non-finite), so the caller rebuilds.
   bool measure(std::span<const Vec<D>> x);
-  // motion_.ring for disp_ (computed once per measure, when asked).
-  const std::vector<double>& ring_bounds();
-  // 3 × the largest |u_p - u_q| over the edges at a cell's vertices and their neighbours.
-  void ring_motion(const std::vector<Vec<D>>& u, std::vector<double>& out);
   // M_ab for the displacements since the build.
   double relative_motion(int a, int b) const;
   // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
@@ -131,29 +143,27 @@ class SelfProximity {
   // BVH instead (after which swept boxes are in boxes_ and the refitted tree).
   bool prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness);
 
-  // [Fringe]
-  // Relative motion of f's vertices from its snapshot to x.
-  double snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const;
   // The gap along `axis` between cells a and b at x (a lower bound of their distance; -inf when
   // the axis is zero).
   double axis_bound(int a, int b, const std::array<float, D>& axis, std::span<const Vec<D>> x) const;
-  // Re-proves f at x: the gap along its axis unless it was touching, else the exact distance.
-  // Takes a new snapshot; true (with the closest points) when within delta.
-  bool test_fringe(Fringe& f, std::span<const Vec<D>> x, double delta, ClosestPoints<D>& cp);
-  // A list or ring pair whose bound came within delta at x (m: its M_ab now): proven farther,
+  // Re-proves pair (a, b) at x: the gap along its axis unless it was touching, else the exact
+  // distance (warm-started). Returns a lower bound of its distance now; `within` (with the
+  // closest points) when that is <= delta.
+  double test_pair(int a, int b, Hints& h, std::span<const Vec<D>> x, double delta, bool& within,
+                   ClosestPoints<D>& cp);
+  // [Fringe]
+  // Relative motion of f's vertices from its snapshot to x.
+  double snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const;
+  void take_snapshot(Fringe& f, std::span<const Vec<D>> x) const;
+  // Ring pair k = (a, b), whose bound came within delta at x (m: its M_ab now): proven farther,
   // or moved into the fringe and tested there. True (with the closest points) when within delta.
-  bool examine(bool ring, int owner, int a, int b, std::span<const Vec<D>> x, double m,
-               double delta, ClosestPoints<D>& cp);
-  // Hands fringe_[i] back to its owner with the bound `lower` at x, and drops it.
+  bool examine_ring(int k, int a, int b, std::span<const Vec<D>> x, double m, double delta,
+                    ClosestPoints<D>& cp);
+  // Hands fringe_[i] back to its ring pair with the bound `lower` at x, and drops it.
   void evict(std::size_t i, double lower);
-  void remove_fringe(std::size_t i);
-  // A list or ring pair's fields (ring gaps include the cell's debt, and are +inf in the fringe).
-  double& gap_of(bool ring, int k) { return ring ? ring_gap_[k] : listed_[k].gap; }
-  int& fringe_of(bool ring, int k) { return ring ? ring_fringe_[k] : listed_[k].fringe; }
-  std::array<float, D>& axis_of(bool ring, int k) { return ring ? ring_axis_[k] : listed_[k].axis; }
   // Tightens a pair's bound at x0 over a step of relative motion s: true if it may come within
   // `thickness` (`lower` in: the bound known, out: the bound at x0).
-  bool step_candidate(int a, int b, Fringe* f, std::span<const Vec<D>> x0, double thickness,
+  bool step_candidate(int a, int b, const Hints& h, std::span<const Vec<D>> x0, double thickness,
                       double s, double& lower);
 
   std::vector<Cell<K>> cells_;
@@ -194,20 +204,19 @@ class SelfProximity {
   // The ring pairs, in topo_.ring order (sorted by (a, b)), their fields apart so that the scan
   // of gaps reads eight bytes a pair. Pairs (a, ·) keep gap + ring_debt_[a]: a rebuild's
   // conversion raises the cell's debt instead of touching every pair.
-  std::vector<double> ring_gap_;
-  std::vector<int> ring_fringe_;
-  std::vector<std::array<float, D>> ring_axis_;
+  std::vector<double> ring_gap_;   // +inf while in the fringe
+  std::vector<int> ring_fringe_;   // its entry in fringe_, or -1
+  std::vector<Hints> ring_hints_;
   std::vector<double> ring_min_;   // nc: smallest stored gap of the pairs (a, ·)
   std::vector<double> ring_debt_;  // nc
   std::vector<Fringe> fringe_;
+  std::vector<std::pair<std::uint64_t, int>> sort_keys_;  // scratch of the answers' sort
+  std::vector<ProximityPair<D>> sort_scratch_;
   std::vector<Vec<D>> x_built_;    // positions at the build
   std::vector<Vec<D>> disp_;       // nv: displacement since the build, less a common centre
-  double rho_ = 0;                 // every |disp_| is <= rho_ (so every M_ab <= 2 rho_)
   MotionBounds motion_;            // of disp_
   std::vector<Vec<D>> step_;       // nv: motion of the current step, less a common centre
-  double step_rho_ = 0;
   MotionBounds step_motion_;       // of step_
-  std::vector<double> edge_scratch_, vertex_scratch_;  // ring_motion's
   long long broad_phase_runs_ = 0;
   long long bounds_tightened_ = 0;
   long long exact_tests_ = 0;
@@ -281,30 +290,30 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     const double s = max_relative<D, K>(step_, cells_[e.a], cells_[e.b]);
     double lower = e.lower - snapshot_motion(e, x0);
     if (lower - s > th) continue;
-    if (step_candidate(e.a, e.b, &e, x0, th, s, lower)) f(e.a, e.b);
+    if (step_candidate(e.a, e.b, e.hints, x0, th, s, lower)) f(e.a, e.b);
+    take_snapshot(e, x0);
+    e.lower = lower;
   }
-  auto tracked = [&](int a, int b, double& gap, double debt) {
+  auto tracked = [&](int a, int b, double& gap, const Hints& h, double debt) {
     const double m0 = relative_motion(a, b);
     const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
     double lower = gap - debt - m0;
     if (lower - s > th) return;
-    if (step_candidate(a, b, nullptr, x0, th, s, lower)) f(a, b);
+    if (step_candidate(a, b, h, x0, th, s, lower)) f(a, b);
     gap = std::max(gap, lower - m0 + debt);
   };
-  for (Tracked& p : listed_) {
-    if (p.fringe >= 0 || p.gap - (motion_.reach[p.a] + motion_.reach[p.b]) -
-                                 (step_motion_.reach[p.a] + step_motion_.reach[p.b]) > th)
-      continue;
-    tracked(p.a, p.b, p.gap, 0.0);
-  }
-  const std::vector<double>& ring_m = ring_bounds();
+  const double coarse = 2 * (motion_.rho + step_motion_.rho);
+  for (Tracked& p : listed_)
+    if (p.gap - coarse <= th) tracked(p.a, p.b, p.gap, p.hints, 0.0);
   for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-    const double debt = ring_debt_[a], reach = ring_m[a] + step_motion_.ring[a];
+    const double debt = ring_debt_[a];
+    if (ring_min_[a] - debt - coarse > th) continue;
+    const double reach = ring_bound(motion_, a) + ring_bound(step_motion_, a);
     if (ring_min_[a] - debt - reach > th) continue;
     double lowest = std::numeric_limits<double>::infinity();
     for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
       double& gap = ring_gap_[k];  // +inf in the fringe
-      if (gap - debt - reach <= th) tracked(a, topo_.ring[k], gap, debt);
+      if (gap - debt - reach <= th) tracked(a, topo_.ring[k], gap, ring_hints_[k], debt);
       lowest = std::min(lowest, gap);
     }
     ring_min_[a] = lowest;
