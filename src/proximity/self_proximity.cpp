@@ -50,7 +50,7 @@ SelfProximity<D, K>::SelfProximity(std::vector<Cell<K>> cells)
   ring_fringe_.assign(topo_.ring.size(), -1);
   ring_hints_.assign(topo_.ring.size(), {});
   ring_min_.assign(cells_.size(), 0.0);
-  ring_debt_.assign(cells_.size(), 0.0);
+  ring_odo_.assign(cells_.size(), 0.0);
 }
 
 template <int D, int K>
@@ -128,11 +128,6 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
   // The list keeps the Euclidean gap of the cells' boxes, the cheapest true bound: tighter
   // bounds are worked out lazily, by the queries, for the pairs that come near their margin.
   candidate_pairs(radius_, [&](int a, int b, double gap) { unsorted_.push_back({a, b, gap, {}}); });
-  if (!measured) {
-    // Nothing to carry over (first build, or after non-finite positions): every bound restarts.
-    for (const Fringe& f : fringe_) ring_fringe_[f.ring] = -1;
-    fringe_.clear();
-  }
   // Counting sort by a, then b within each a (a handful): linear, unlike a comparison sort.
   bucket_.assign(cells_.size() + 1, 0);
   for (const Tracked& p : unsorted_) ++bucket_[p.a + 1];
@@ -161,31 +156,6 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
         p.gap = std::max(p.gap, old->gap - relative_motion(p.a, p.b));
     }
     begin = end;
-  }
-  // Ring pairs: the same conversion with their strain bound, which is the same for all pairs of
-  // a cell, so it is kept as the cell's debt (a cost per cell, not per pair); from their boxes
-  // when there is nothing to convert from.
-  const int nc = static_cast<int>(cells_.size());
-  if (measured) {
-    for (int a = 0; a < nc; ++a) {
-      ring_debt_[a] += ring_bound(motion_, a);
-      if (ring_debt_[a] < 16 * radius_) continue;
-      // Settle a large debt into the gaps, so that it never costs precision.
-      for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) ring_gap_[k] -= ring_debt_[a];
-      ring_min_[a] -= ring_debt_[a];
-      ring_debt_[a] = 0;
-    }
-  } else {
-    for (int a = 0; a < nc; ++a) {
-      double lowest = std::numeric_limits<double>::infinity();
-      for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
-        ring_gap_[k] = box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]);
-        ring_hints_[k] = {};
-        lowest = std::min(lowest, ring_gap_[k]);
-      }
-      ring_min_[a] = lowest;
-      ring_debt_[a] = 0;
-    }
   }
   x_built_.assign(x.begin(), x.end());
   disp_.assign(x.size(), Vec<D>::Zero());
@@ -237,6 +207,39 @@ bool SelfProximity<D, K>::measure(std::span<const Vec<D>> x) {
 template <int D, int K>
 double SelfProximity<D, K>::relative_motion(int a, int b) const {
   return max_relative<D, K>(disp_, cells_[a], cells_[b]);
+}
+
+template <int D, int K>
+void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
+  const int nc = static_cast<int>(cells_.size());
+  if (x_ring_.size() == x.size()) {
+    if (std::equal(x.begin(), x.end(), x_ring_.begin())) return;  // where it stopped (a step's x1)
+    ring_move_.resize(x.size());
+    for (std::size_t v = 0; v < x.size(); ++v) ring_move_[v] = x[v] - x_ring_[v];
+    const double rho = centre_and_radius<D>(ring_move_);
+    if (std::isfinite(rho)) {
+      ring_motion_.reset(&ring_move_, rho);
+      for (int a = 0; a < nc; ++a) run_odometer(a, std::min(2 * rho, ring_bound(ring_motion_, a)));
+      x_ring_.assign(x.begin(), x.end());
+      return;
+    }
+  }
+  // Nothing to run on from (first use, or non-finite positions now or then): every bound
+  // restarts from the boxes at x (a cell with a non-finite vertex has all space for its box).
+  for (const Fringe& f : fringe_) ring_fringe_[f.ring] = -1;
+  fringe_.clear();
+  static_boxes<D, K>(x, cells_, boxes_);
+  for (int a = 0; a < nc; ++a) {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
+      ring_gap_[k] = box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]);
+      ring_hints_[k] = {};
+      lowest = std::min(lowest, ring_gap_[k]);
+    }
+    ring_min_[a] = lowest;
+    ring_odo_[a] = 0;
+  }
+  x_ring_.assign(x.begin(), x.end());
 }
 
 // [SECTION] Testing a pair, and the fringe
@@ -301,7 +304,7 @@ void SelfProximity<D, K>::take_snapshot(Fringe& f, std::span<const Vec<D>> x) co
 }
 
 template <int D, int K>
-bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<D>> x, double m,
+bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<D>> x,
                                        double delta, ClosestPoints<D>& cp) {
   // The separating axes first (the cached one, then all): most pairs their bound let through
   // are well apart (a bound measured from the build loses twice their motion), and stay out of
@@ -317,7 +320,7 @@ bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<
     store_axis<D>(best, h.axis);
   }
   if (lower > kPromoteMargins * delta) {
-    ring_gap_[k] = std::max(ring_gap_[k], lower - m + ring_debt_[a]);
+    ring_gap_[k] = std::max(ring_gap_[k], lower + ring_odo_[a]);
     return false;
   }
   ring_fringe_[k] = static_cast<int>(fringe_.size());
@@ -338,7 +341,7 @@ bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<
 template <int D, int K>
 void SelfProximity<D, K>::evict(std::size_t i, double lower) {
   const Fringe& f = fringe_[i];
-  ring_gap_[f.ring] = lower - relative_motion(f.a, f.b) + ring_debt_[f.a];
+  ring_gap_[f.ring] = lower + ring_odo_[f.a];
   ring_min_[f.a] = std::min(ring_min_[f.a], ring_gap_[f.ring]);
   ring_hints_[f.ring] = f.hints;
   ring_fringe_[f.ring] = -1;
@@ -390,6 +393,7 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
   }
   if (with_ring) {
     // The list's answers are sorted; the ring's go after them, and the whole is sorted below.
+    advance_ring(x);
     for (std::size_t i = 0; i < fringe_.size();) {
       Fringe& f = fringe_[i];
       const double lower = f.lower - snapshot_motion(f, x);
@@ -406,18 +410,13 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       ++i;
     }
     for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-      const double debt = ring_debt_[a];
-      if (ring_min_[a] - debt - 2 * motion_.rho > delta) continue;
-      const double ring_m = ring_bound(motion_, a);
-      if (ring_min_[a] - debt - ring_m > delta) continue;
+      const double odo = ring_odo_[a];
+      if (ring_min_[a] - odo > delta) continue;
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
-        if (ring_gap_[k] - debt - ring_m <= delta) {  // never in the fringe (+inf)
-          const int b = topo_.ring[k];
-          const double m = relative_motion(a, b);
-          if (ring_gap_[k] - debt - m <= delta && examine_ring(k, a, b, x, m, delta, cp))
-            out.push_back({a, b, cp});
-        }
+        // Never in the fringe (+inf).
+        if (ring_gap_[k] - odo <= delta && examine_ring(k, a, topo_.ring[k], x, delta, cp))
+          out.push_back({a, topo_.ring[k], cp});
         lowest = std::min(lowest, ring_gap_[k]);
       }
       ring_min_[a] = lowest;
@@ -427,16 +426,21 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
 }
 
 template <int D, int K>
-bool SelfProximity<D, K>::step_candidate(int a, int b, const Hints& h, std::span<const Vec<D>> x0,
+bool SelfProximity<D, K>::step_candidate(int a, int b, Hints& h, std::span<const Vec<D>> x0,
                                          double thickness, double s, double& lower) {
   // Tighten the bound at x0 before handing the pair out: a pair that only looked close (its
-  // bound was the gap of boxes) is then left out of this step and of the next few.
+  // bound was the gap of boxes) is then left out of this step and of the next few. The axes are
+  // asked for a bound well past the need (measured: 3 × beats 1.5 × and 6 ×), and the best one is
+  // kept for the next time.
   ++bounds_tightened_;
   lower = std::max(lower, axis_bound(a, b, h.axis, x0));
-  if (!(lower - s > thickness))
+  if (!(lower - s > thickness)) {
+    Vec<D> best = Vec<D>::Zero();
     lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x0, cells_[a]),
                                                           gather<D, K>(x0, cells_[b]),
-                                                          1.5 * (thickness + s)));
+                                                          3 * (thickness + s), &best));
+    store_axis<D>(best, h.axis);
+  }
   return !(lower - s > thickness);  // NaN: a candidate
 }
 

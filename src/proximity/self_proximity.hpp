@@ -35,9 +35,12 @@ enum class RingPairs { kInclude, kExclude };
 //    The list is rebuilt, keeping what it knew of the pairs that stay, when R - 2ρ falls below
 //    the margin.
 //  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh), on a fine mesh
-//    most of what any query near the mesh's own spacing finds. The same kind of bound; the
-//    strain of the edges around a cell bounds M_ab for all its ring partners at once (three
-//    edges join any vertex of a to any of b), so that far pairs cost a comparison per cell.
+//    most of what any query near the mesh's own spacing finds. They do not depend on the list:
+//    the strain of the edges around a cell bounds M_ab for all its ring partners at once (three
+//    edges join any vertex of a to any of b), and each cell sums these bounds over the moves
+//    between the queries that look at ring pairs (an odometer, S_a). A pair proven at least L
+//    apart keeps G = L + S_a, and dist_ab >= G - S_a for as long as the odometer runs: a bound
+//    re-proven now loses nothing of the motion before, and far pairs cost a comparison per cell.
 //    Ring pairs that come near the margin move to the fringe, where each keeps a lower bound of
 //    its distance at its own snapshot (its six vertices' positions then): M_ab is then their
 //    exact relative motion since, and a pair is looked at again only once it has really moved
@@ -95,7 +98,7 @@ class SelfProximity {
     std::array<float, D> axis{};
   };
   // A listed pair: dist_ab(t) >= gap - M_ab(t), M over the displacement since the build. (Ring
-  // pairs keep their gaps and hints in ring_gap_ and ring_hints_.)
+  // pairs keep their G and hints in ring_gap_ and ring_hints_.)
   struct Tracked {
     int a = 0, b = 0;
     double gap = 0;
@@ -111,8 +114,8 @@ class SelfProximity {
   };
   // The motion bounds of one displacement field u (nv, centred), coarse to fine, the finer ones
   // worked out only when a coarser one does not settle a pair: every |u| <= rho (so every
-  // M_ab <= 2 rho); per cell, a bound of M_ab over all its ring partners (ring_bound); per pair,
-  // M_ab itself (max_relative).
+  // M_ab <= 2 rho); per cell, a bound of M_ab over all its ring partners (ring_bound, never more
+  // than 2 rho); per pair, M_ab itself (max_relative).
   struct MotionBounds {
     const std::vector<Vec<D>>* u = nullptr;
     double rho = 0;
@@ -135,6 +138,20 @@ class SelfProximity {
   bool measure(std::span<const Vec<D>> x);
   // M_ab for the displacements since the build.
   double relative_motion(int a, int b) const;
+  // Runs the ring pairs' odometer on to x (every S_a grows by cell a's ring bound of the move
+  // since it last ran); when there is nothing to run on from (first use, non-finite positions)
+  // it restarts their bounds from the cells' boxes at x and empties the fringe.
+  void advance_ring(std::span<const Vec<D>> x);
+  // S_a += m, settled into the cell's bounds once it outgrows their slack, so that G - S_a never
+  // loses precision to a large S_a.
+  void run_odometer(int a, double m) {
+    double& odo = ring_odo_[a];
+    odo += m;
+    if (!(odo > std::abs(ring_min_[a] - odo))) return;
+    for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) ring_gap_[k] -= odo;
+    ring_min_[a] -= odo;
+    odo = 0;
+  }
   // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
   // so the bounds carry over to the new reference; otherwise they restart from boxes.
   void build_list(std::span<const Vec<D>> x, double margin, bool measured);
@@ -155,15 +172,15 @@ class SelfProximity {
   // Relative motion of f's vertices from its snapshot to x.
   double snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const;
   void take_snapshot(Fringe& f, std::span<const Vec<D>> x) const;
-  // Ring pair k = (a, b), whose bound came within delta at x (m: its M_ab now): proven farther,
-  // or moved into the fringe and tested there. True (with the closest points) when within delta.
-  bool examine_ring(int k, int a, int b, std::span<const Vec<D>> x, double m, double delta,
+  // Ring pair k = (a, b), whose bound came within delta at x: proven farther, or moved into the
+  // fringe and tested there. True (with the closest points) when within delta.
+  bool examine_ring(int k, int a, int b, std::span<const Vec<D>> x, double delta,
                     ClosestPoints<D>& cp);
   // Hands fringe_[i] back to its ring pair with the bound `lower` at x, and drops it.
   void evict(std::size_t i, double lower);
   // Tightens a pair's bound at x0 over a step of relative motion s: true if it may come within
   // `thickness` (`lower` in: the bound known, out: the bound at x0).
-  bool step_candidate(int a, int b, const Hints& h, std::span<const Vec<D>> x0, double thickness,
+  bool step_candidate(int a, int b, Hints& h, std::span<const Vec<D>> x0, double thickness,
                       double s, double& lower);
 
   std::vector<Cell<K>> cells_;
@@ -202,13 +219,15 @@ class SelfProximity {
   std::vector<Tracked> previous_;  // scratch of the build: the list it replaces
   std::vector<int> bucket_;        // scratch of the build: counting sort by a
   // The ring pairs, in topo_.ring order (sorted by (a, b)), their fields apart so that the scan
-  // of gaps reads eight bytes a pair. Pairs (a, ·) keep gap + ring_debt_[a]: a rebuild's
-  // conversion raises the cell's debt instead of touching every pair.
-  std::vector<double> ring_gap_;   // +inf while in the fringe
+  // reads eight bytes a pair: G = (a lower bound at some time) + S_a (then).
+  std::vector<double> ring_gap_;   // G; +inf while in the fringe
   std::vector<int> ring_fringe_;   // its entry in fringe_, or -1
   std::vector<Hints> ring_hints_;
-  std::vector<double> ring_min_;   // nc: smallest stored gap of the pairs (a, ·)
-  std::vector<double> ring_debt_;  // nc
+  std::vector<double> ring_min_;   // nc: smallest G of the pairs (a, ·)
+  std::vector<double> ring_odo_;   // nc: S_a
+  std::vector<Vec<D>> x_ring_;     // where the odometer last ran to (empty: never)
+  std::vector<Vec<D>> ring_move_;  // nv: the move since, less a common centre
+  MotionBounds ring_motion_;       // of ring_move_
   std::vector<Fringe> fringe_;
   std::vector<std::pair<std::uint64_t, int>> sort_keys_;  // scratch of the answers' sort
   std::vector<ProximityPair<D>> sort_scratch_;
@@ -285,6 +304,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
         if (!(prox_detail::box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]) > th)) f(a, topo_.ring[k]);
     return;
   }
+  advance_ring(x0);
   // Over the step, the relative motion grows by at most S_ab, that of the step.
   for (Fringe& e : fringe_) {
     const double s = max_relative<D, K>(step_, cells_[e.a], cells_[e.b]);
@@ -294,30 +314,48 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     take_snapshot(e, x0);
     e.lower = lower;
   }
-  auto tracked = [&](int a, int b, double& gap, const Hints& h, double debt) {
-    const double m0 = relative_motion(a, b);
-    const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
-    double lower = gap - debt - m0;
-    if (lower - s > th) return;
-    if (step_candidate(a, b, h, x0, th, s, lower)) f(a, b);
-    gap = std::max(gap, lower - m0 + debt);
-  };
   const double coarse = 2 * (motion_.rho + step_motion_.rho);
-  for (Tracked& p : listed_)
-    if (p.gap - coarse <= th) tracked(p.a, p.b, p.gap, p.hints, 0.0);
+  for (Tracked& p : listed_) {
+    if (p.gap - coarse > th) continue;
+    const double m0 = relative_motion(p.a, p.b);
+    const double s = max_relative<D, K>(step_, cells_[p.a], cells_[p.b]);
+    double lower = p.gap - m0;
+    if (lower - s > th) continue;
+    if (step_candidate(p.a, p.b, p.hints, x0, th, s, lower)) f(p.a, p.b);
+    p.gap = std::max(p.gap, lower - m0);
+  }
+  // The ring's odometer runs on to x1 with the step's own bounds: the next step starts where this
+  // one ends (unless its fail-safe stopped vertices) and finds nothing to measure.
+  const double step_coarse = 2 * step_motion_.rho;
   for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-    const double debt = ring_debt_[a];
-    if (ring_min_[a] - debt - coarse > th) continue;
-    const double reach = ring_bound(motion_, a) + ring_bound(step_motion_, a);
-    if (ring_min_[a] - debt - reach > th) continue;
+    const double odo = ring_odo_[a];
+    if (ring_min_[a] - odo - step_coarse > th) {
+      run_odometer(a, step_coarse);
+      continue;
+    }
+    const double reach = std::min(step_coarse, ring_bound(step_motion_, a));
+    if (ring_min_[a] - odo - reach > th) {
+      run_odometer(a, reach);
+      continue;
+    }
     double lowest = std::numeric_limits<double>::infinity();
     for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
       double& gap = ring_gap_[k];  // +inf in the fringe
-      if (gap - debt - reach <= th) tracked(a, topo_.ring[k], gap, ring_hints_[k], debt);
+      if (gap - odo - reach <= th) {
+        const int b = topo_.ring[k];
+        const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
+        double lower = gap - odo;
+        if (!(lower - s > th)) {
+          if (step_candidate(a, b, ring_hints_[k], x0, th, s, lower)) f(a, b);
+          gap = std::max(gap, lower + odo);
+        }
+      }
       lowest = std::min(lowest, gap);
     }
     ring_min_[a] = lowest;
+    run_odometer(a, reach);
   }
+  x_ring_.assign(x1.begin(), x1.end());
 }
 
 }  // namespace s4d

@@ -230,8 +230,8 @@ TEST(MeshProximity, CoherentQueriesEqualFreshOnesAlongAMotion) {
 }
 
 // A long run on a deforming grid (the ring pairs dominate there): every query equals a fresh one,
-// with and without ring pairs, through list rebuilds, fringe evictions and the settling of large
-// ring debts; a common translation costs no rebuild at all.
+// with and without ring pairs, through list rebuilds, fringe evictions and the settling of the
+// ring odometers; a common translation costs no rebuild at all.
 TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
   const int n = 14;
   std::vector<Cell<3>> cells;
@@ -293,6 +293,72 @@ TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
     EXPECT_EQ(got.size(), want.size());
   }
   EXPECT_EQ(coherent.broad_phase_runs(), runs);
+}
+
+// Steps as the physics takes them: the pairs near x0, then the candidates of the step x0 → x1,
+// and the next step starts at x1 or, when a fail-safe stopped some vertices, at a mix of x0 and
+// x1 (the ring odometer then has to measure its way back). The candidates cover every pair, ring
+// pairs included, that an all-pairs continuous test finds coming within the thickness.
+TEST(MeshProximity, GridStepCandidatesCoverEveryHitThroughStoppedSteps) {
+  const int n = 12;
+  std::vector<Cell<3>> cells;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j;
+      cells.push_back({a, a + 1, a + n + 1});
+      cells.push_back({a, a + n + 1, a + n});
+    }
+  auto grid = [&](double phase) {
+    std::vector<Vec4> x;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u = double(i) / (n - 1), v = double(j) / (n - 1);
+        x.push_back(Vec4(u + 0.1 * std::sin(7 * v + 2 * u + phase), v + 0.1 * std::sin(6 * u - 3 * v + phase),
+                         0.3 * std::sin(9 * u + phase) * std::cos(8 * v), 0.3 * std::cos(7 * u - 5 * v) * std::sin(6 * v + 2 * phase)));
+      }
+    return x;
+  };
+  const double spacing = 1.0 / (n - 1);
+  CcdOptions opt;
+  opt.thickness = 0.6 * spacing;  // ring pairs come this close as the grid folds
+  SelfProximity<4, 3> q(cells);
+  std::mt19937 rng(5);
+  std::vector<ProximityPair<4>> near;
+  auto x0 = grid(0);
+  int hits = 0, ring_hits = 0, stopped = 0;
+  for (int step = 0; step < 240; ++step) {
+    const auto x1 = grid(0.015 * (step + 1));
+    q.pairs_within(x0, 1.5 * opt.thickness, near, RingPairs::kExclude);
+    std::set<std::pair<int, int>> offered;
+    q.step_candidates(x0, x1, opt.thickness, [&](int a, int b) { offered.insert({a, b}); });
+    if (step % 4 == 0) {
+      for (int a = 0; a < static_cast<int>(cells.size()); ++a)
+        for (int b = a + 1; b < static_cast<int>(cells.size()); ++b) {
+          if (share_vertex<3, 3>(cells[a], cells[b])) continue;
+          Simplex<4, 3> a0, a1, b0, b1;
+          for (int i = 0; i < 3; ++i) {
+            a0[i] = x0[cells[a][i]], a1[i] = x1[cells[a][i]];
+            b0[i] = x0[cells[b][i]], b1[i] = x1[cells[b][i]];
+          }
+          if (!earliest_contact<4, 3, 3>(a0, a1, b0, b1, opt).hit) continue;
+          ++hits;
+          const auto& t = q.topology();
+          ring_hits += std::binary_search(t.ring.begin() + t.ring_offset[a], t.ring.begin() + t.ring_offset[a + 1], b);
+          ASSERT_TRUE(offered.count({a, b})) << "step " << step << " missed " << a << "," << b;
+        }
+    }
+    auto next = x1;
+    if (step % 7 == 3) {  // a fail-safe stopped a patch of vertices at x0
+      const int c = std::uniform_int_distribution<int>(0, n * n - 1)(rng);
+      for (int v = 0; v < n * n; ++v)
+        if ((v % n - c % n) * (v % n - c % n) + (v / n - c / n) * (v / n - c / n) <= 4) next[v] = x0[v];
+      ++stopped;
+    }
+    x0 = next;
+  }
+  EXPECT_GT(hits, 0);
+  EXPECT_GT(ring_hits, 0) << "the run should bring ring pairs within the thickness";
+  EXPECT_GT(stopped, 20);
 }
 
 // The float boxes' gaps the broad phase prunes with never exceed the double boxes' gaps.
