@@ -155,7 +155,7 @@ class SelfProximity {
   // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
   // so the bounds carry over to the new reference; otherwise they restart from boxes.
   void build_list(std::span<const Vec<D>> x, double margin, bool measured);
-  // The step's motion (step_, step_rho_, step_motion_) and whether the tracked pairs (built now
+  // The step's motion (step_, step_motion_) and whether the tracked pairs (built now
   // if there were none and the motion is small) answer it; false when the caller must sweep the
   // BVH instead (after which swept boxes are in boxes_ and the refitted tree).
   bool prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness);
