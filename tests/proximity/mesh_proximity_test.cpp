@@ -229,11 +229,9 @@ TEST(MeshProximity, CoherentQueriesEqualFreshOnesAlongAMotion) {
   check_coherent_sequence<4, 2>(14);
 }
 
-// A long run on a deforming grid (the ring pairs dominate there): every query equals a fresh one,
-// with and without ring pairs, through list rebuilds, fringe evictions and the settling of the
-// ring odometers; a common translation costs no rebuild at all.
-TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
-  const int n = 14;
+// An n × n grid of triangles, and its vertices folded in R^4 at a phase of a motion: stretched in
+// the plane by `stretch`, folded into z and w by `fold`, with w moving at `w_rate` × the phase.
+std::vector<Cell<3>> grid_cells(int n) {
   std::vector<Cell<3>> cells;
   for (int i = 0; i + 1 < n; ++i)
     for (int j = 0; j + 1 < n; ++j) {
@@ -241,16 +239,28 @@ TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
       cells.push_back({a, a + 1, a + n + 1});
       cells.push_back({a, a + n + 1, a + n});
     }
-  auto grid = [&](double phase) {
-    std::vector<Vec4> x;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const double u = double(i) / (n - 1), v = double(j) / (n - 1);
-        x.push_back(Vec4(u + 0.08 * std::sin(7 * v + 2 * u + phase), v + 0.08 * std::sin(6 * u - 3 * v + phase),
-                         0.25 * std::sin(9 * u + phase) * std::cos(8 * v), 0.25 * std::cos(7 * u - 5 * v) * std::sin(6 * v + u + phase)));
-      }
-    return x;
-  };
+  return cells;
+}
+
+std::vector<Vec4> folded_grid(int n, double phase, double stretch, double fold, double w_rate) {
+  std::vector<Vec4> x;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = double(i) / (n - 1), v = double(j) / (n - 1);
+      x.push_back(Vec4(u + stretch * std::sin(7 * v + 2 * u + phase), v + stretch * std::sin(6 * u - 3 * v + phase),
+                       fold * std::sin(9 * u + phase) * std::cos(8 * v),
+                       fold * std::cos(7 * u - 5 * v) * std::sin(6 * v + u + w_rate * phase)));
+    }
+  return x;
+}
+
+// A long run on a deforming grid (the ring pairs dominate there): every query equals a fresh one,
+// with and without ring pairs, through list rebuilds, fringe evictions and the settling of the
+// ring odometers; a common translation costs no rebuild at all.
+TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
+  const int n = 14;
+  const std::vector<Cell<3>> cells = grid_cells(n);
+  auto grid = [&](double phase) { return folded_grid(n, phase, 0.08, 0.25, 1.0); };
   const double delta = 0.8 / (n - 1);
   SelfProximity<4, 3> coherent(cells);
   int answered = 0;
@@ -301,23 +311,8 @@ TEST(MeshProximity, CoherentGridRunEqualsFreshQueriesWithAndWithoutRingPairs) {
 // pairs included, that an all-pairs continuous test finds coming within the thickness.
 TEST(MeshProximity, GridStepCandidatesCoverEveryHitThroughStoppedSteps) {
   const int n = 12;
-  std::vector<Cell<3>> cells;
-  for (int i = 0; i + 1 < n; ++i)
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j;
-      cells.push_back({a, a + 1, a + n + 1});
-      cells.push_back({a, a + n + 1, a + n});
-    }
-  auto grid = [&](double phase) {
-    std::vector<Vec4> x;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const double u = double(i) / (n - 1), v = double(j) / (n - 1);
-        x.push_back(Vec4(u + 0.1 * std::sin(7 * v + 2 * u + phase), v + 0.1 * std::sin(6 * u - 3 * v + phase),
-                         0.3 * std::sin(9 * u + phase) * std::cos(8 * v), 0.3 * std::cos(7 * u - 5 * v) * std::sin(6 * v + 2 * phase)));
-      }
-    return x;
-  };
+  const std::vector<Cell<3>> cells = grid_cells(n);
+  auto grid = [&](double phase) { return folded_grid(n, phase, 0.1, 0.3, 2.0); };
   const double spacing = 1.0 / (n - 1);
   CcdOptions opt;
   opt.thickness = 0.6 * spacing;  // ring pairs come this close as the grid folds
