@@ -52,7 +52,7 @@ class CollisionSolver {
                  CollisionStats& stats);
   int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
 
-  // All pair finding goes through one coherent proximity query (mesh_proximity.hpp): its list
+  // All pair finding goes through one coherent proximity query (self_proximity.hpp): its list
   // of close pairs with distance bounds is reused from step to step while motion is small, and
   // it answers both the repulsion's pairs within reach and the fail-safe's step candidates.
   SelfProximity<D, 3> prox_;

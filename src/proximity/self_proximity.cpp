@@ -11,9 +11,9 @@ using namespace prox_detail;
 
 namespace {
 
-// A pair whose bound fails joins the fringe unless it is proven farther than kPromoteMargins
-// margins; beyond kEvictMargins it goes back to its owner's cheaper bound (the gap between the
-// two keeps pairs from going back and forth).
+// A ring pair whose bound fails joins the fringe unless it is proven farther than kPromoteMargins
+// margins; beyond kEvictMargins it goes back to the ring's cheaper bound (the gap between the two
+// keeps pairs from going back and forth).
 constexpr double kPromoteMargins = 1.5;
 constexpr double kEvictMargins = 2.0;
 
@@ -150,8 +150,8 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
       while (old != previous_.cend() && (old->a < p.a || (old->a == p.a && old->b < p.b))) ++old;
       if (old == previous_.cend() || old->a != p.a || old->b != p.b) continue;
       p.hints = old->hints;
-      if (old->gap - 2 * motion_.rho > p.gap)
-        p.gap = old->gap - 2 * motion_.rho;
+      if (old->gap - 2 * rho_ > p.gap)
+        p.gap = old->gap - 2 * rho_;
       else if (old->gap > p.gap)
         p.gap = std::max(p.gap, old->gap - relative_motion(p.a, p.b));
     }
@@ -159,7 +159,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
   }
   x_built_.assign(x.begin(), x.end());
   disp_.assign(x.size(), Vec<D>::Zero());
-  motion_.reset(&disp_, 0.0);
+  rho_ = 0;
 }
 
 // [SECTION] Motion since the build
@@ -196,12 +196,12 @@ double SelfProximity<D, K>::ring_bound(MotionBounds& m, int a) {
 
 template <int D, int K>
 bool SelfProximity<D, K>::measure(std::span<const Vec<D>> x) {
-  motion_.reset(&disp_, std::numeric_limits<double>::infinity());
+  rho_ = std::numeric_limits<double>::infinity();
   if (!coherent_ || radius_ < 0 || x_built_.size() != x.size()) return false;
   disp_.resize(x.size());
   for (std::size_t v = 0; v < x.size(); ++v) disp_[v] = x[v] - x_built_[v];
-  motion_.rho = centre_and_radius<D>(disp_);
-  return std::isfinite(motion_.rho);  // a non-finite vertex: rebuild (its box is all space)
+  rho_ = centre_and_radius<D>(disp_);
+  return std::isfinite(rho_);  // a non-finite vertex: rebuild (its box is all space)
 }
 
 template <int D, int K>
@@ -306,8 +306,8 @@ void SelfProximity<D, K>::take_snapshot(Fringe& f, std::span<const Vec<D>> x) co
 template <int D, int K>
 bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<D>> x,
                                        double delta, ClosestPoints<D>& cp) {
-  // The separating axes first (the cached one, then all): most pairs their bound let through
-  // are well apart (a bound measured from the build loses twice their motion), and stay out of
+  // The separating axes first (the cached one, then all): most pairs the odometer lets through
+  // are still well apart (its per-cell strain bound outruns their own motion), and stay out of
   // the fringe.
   ++bounds_tightened_;
   Hints& h = ring_hints_[k];
@@ -370,22 +370,18 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b, delta, out);
     });
     if (with_ring)
-      for (int a = 0; a < static_cast<int>(cells_.size()); ++a)
-        for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
-          const int b = topo_.ring[k];
-          if (!(box_gap<D>(boxes_[a], boxes_[b]) > delta))
-            narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b,
-                                   delta, out);
-        }
+      ring_pairs_near(delta, [&](int a, int b) {
+        narrow_within<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), a, b, delta, out);
+      });
     sort_pairs(out, sort_keys_, sort_scratch_);
     return;
   }
   const bool measured = measure(x);
-  if (!(measured && radius_ - 2 * motion_.rho >= delta)) build_list(x, delta, measured);
+  if (!(measured && radius_ - 2 * rho_ >= delta)) build_list(x, delta, measured);
   ClosestPoints<D> cp;
   bool within = false;
   for (Tracked& p : listed_) {
-    if (p.gap - 2 * motion_.rho > delta) continue;
+    if (p.gap - 2 * rho_ > delta) continue;
     const double m = relative_motion(p.a, p.b);
     if (p.gap - m > delta) continue;
     p.gap = std::max(p.gap, test_pair(p.a, p.b, p.hints, x, delta, within, cp) - m);
@@ -457,7 +453,7 @@ bool SelfProximity<D, K>::prepare_step(std::span<const Vec<D>> x0, std::span<con
   step_motion_.reset(&step_, step_rho);
   if (coherent_ && std::isfinite(step_rho)) {
     const bool have = measure(x0);
-    bool listed = have && radius_ - 2 * motion_.rho - 2 * step_rho >= thickness;
+    bool listed = have && radius_ - 2 * rho_ - 2 * step_rho >= thickness;
     // A list for this step's motion pays off when the motion is small next to the thickness;
     // a few fast cells would inflate it for every cell, and then the swept tree is better.
     if (!listed && 2 * step_rho <= thickness) {

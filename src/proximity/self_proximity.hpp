@@ -133,7 +133,7 @@ class SelfProximity {
   double ring_bound(MotionBounds& m, int a);
 
   void check(std::size_t n) const;
-  // Displacements since the build for x (disp_, motion_); false when there is no build to
+  // Displacements since the build for x (disp_, rho_); false when there is no build to
   // compare with or x is not comparable (sizes, non-finite), so the caller rebuilds.
   bool measure(std::span<const Vec<D>> x);
   // M_ab for the displacements since the build.
@@ -198,6 +198,13 @@ class SelfProximity {
   // at once (leaf_gaps2).
   template <class F>
   void candidate_pairs(double margin, F&& f) const;
+  // Calls f(a, b) for every ring pair whose boxes (boxes_) may be within margin.
+  template <class F>
+  void ring_pairs_near(double margin, F&& f) const {
+    for (int a = 0; a < static_cast<int>(cells_.size()); ++a)
+      for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k)
+        if (!(prox_detail::box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]) > margin)) f(a, topo_.ring[k]);
+  }
   // Per leaf, the leaves holding topological neighbours of its cells and which of their slot
   // pairs are not (bit i·kLeafBits + j: slot i of the first against slot j of the other),
   // sorted by the other leaf. Redone when the tree is rebuilt.
@@ -233,7 +240,7 @@ class SelfProximity {
   std::vector<ProximityPair<D>> sort_scratch_;
   std::vector<Vec<D>> x_built_;    // positions at the build
   std::vector<Vec<D>> disp_;       // nv: displacement since the build, less a common centre
-  MotionBounds motion_;            // of disp_
+  double rho_ = 0;                 // every |disp_| is <= rho_ (so every M_ab <= 2 rho_)
   std::vector<Vec<D>> step_;       // nv: motion of the current step, less a common centre
   MotionBounds step_motion_;       // of step_
   long long broad_phase_runs_ = 0;
@@ -299,9 +306,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   if (!prepare_step(x0, x1, th)) {
     // Swept boxes: the tree for the other pairs, the boxes themselves for the ring pairs.
     candidate_pairs(th, [&](int a, int b, double) { f(a, b); });
-    for (int a = 0; a < static_cast<int>(cells_.size()); ++a)
-      for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k)
-        if (!(prox_detail::box_gap<D>(boxes_[a], boxes_[topo_.ring[k]]) > th)) f(a, topo_.ring[k]);
+    ring_pairs_near(th, f);
     return;
   }
   advance_ring(x0);
@@ -314,7 +319,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     take_snapshot(e, x0);
     e.lower = lower;
   }
-  const double coarse = 2 * (motion_.rho + step_motion_.rho);
+  const double coarse = 2 * (rho_ + step_motion_.rho);
   for (Tracked& p : listed_) {
     if (p.gap - coarse > th) continue;
     const double m0 = relative_motion(p.a, p.b);
