@@ -11,45 +11,6 @@
 
 namespace s4d {
 
-namespace {
-
-// The hot loop of every substep: one reciprocal square root a spring, no vector division, and the
-// exponent's branch taken once outside the loop.
-template <int D, bool Linear>
-void spring_forces(const std::vector<Spring>& springs, double beta, double kd,
-                   std::span<const Vec<D>> x, std::span<const Vec<D>> v, std::span<Vec<D>> force) {
-  for (const Spring& s : springs) {
-    const Vec<D> d = x[s.b] - x[s.a];
-    const double len2 = d.squaredNorm();
-    if (!(len2 > 1e-24)) continue;  // coincident ends: no direction to pull along
-    const double inv = 1 / std::sqrt(len2);
-    const double e = len2 * inv - s.rest;
-    // Paper Eq. 1: |F| = k |e|^(1+β), along the spring, towards rest length.
-    double mag;
-    if constexpr (Linear)
-      mag = s.k * e;
-    else
-      mag = std::copysign(s.k * std::pow(std::abs(e), 1 + beta), e);
-    const double damp = kd * (v[s.b] - v[s.a]).dot(d) * inv;
-    const Vec<D> f = ((mag + damp) * inv) * d;
-    force[s.a] += f;
-    force[s.b] -= f;
-  }
-}
-
-}  // namespace
-
-template <int D>
-void add_spring_forces(const Model<D>& model, std::span<const Vec<D>> x, std::span<const Vec<D>> v,
-                       std::span<Vec<D>> force) {
-  const double beta = model.params.beta;
-  const double kd = model.params.spring_damping;
-  if (beta == 0)
-    spring_forces<D, true>(model.springs, beta, kd, x, v, force);
-  else
-    spring_forces<D, false>(model.springs, beta, kd, x, v, force);
-}
-
 template <int D>
 World<D>::World(Model<D> model) : model_(std::move(model)), collision_(model_) {
   const int n = model_.nv;
@@ -247,13 +208,8 @@ double World<D>::min_separation(double search) const {
   return d;
 }
 
-#define S4D_INSTANTIATE(D)                                                                   \
-  template class World<D>;                                                                   \
-  template void add_spring_forces<D>(const Model<D>&, std::span<const Vec<D>>,              \
-                                     std::span<const Vec<D>>, std::span<Vec<D>>);
-S4D_INSTANTIATE(2)
-S4D_INSTANTIATE(3)
-S4D_INSTANTIATE(4)
-#undef S4D_INSTANTIATE
+template class World<2>;
+template class World<3>;
+template class World<4>;
 
 }  // namespace s4d

@@ -9,6 +9,7 @@
 
 #include "physics/collision.hpp"
 #include "physics/model.hpp"
+#include "physics/spring_forces.hpp"
 
 namespace s4d {
 
@@ -87,10 +88,5 @@ class World {
   Data<D> data_;
   CollisionSolver<D> collision_;
 };
-
-// Spring and damping forces of the current state added into data.force (for tests and tools).
-template <int D>
-void add_spring_forces(const Model<D>& model, std::span<const Vec<D>> x,
-                       std::span<const Vec<D>> v, std::span<Vec<D>> force);
 
 }  // namespace s4d
