@@ -22,11 +22,15 @@ constexpr double kEvictMargins = 2.0;
 namespace prox_detail {
 
 template <int D>
-double centre_and_radius(std::vector<Vec<D>>& v) {
-  if (v.empty()) return 0;
-  Vec<D> lo = v[0], hi = v[0];
+double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
+                          std::vector<Vec<D>>& out) {
+  out.resize(a.size());
+  if (a.empty()) return 0;
+  Vec<D> lo = a[0] - b[0], hi = lo;
   double sum = 0;
-  for (const Vec<D>& u : v) {
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    const Vec<D> u = a[v] - b[v];
+    out[v] = u;
     lo = lo.cwiseMin(u);
     hi = hi.cwiseMax(u);
     sum += u.sum();
@@ -34,7 +38,7 @@ double centre_and_radius(std::vector<Vec<D>>& v) {
   if (!std::isfinite(sum)) return std::numeric_limits<double>::infinity();
   const Vec<D> c = 0.5 * (lo + hi);
   double r2 = 0;
-  for (Vec<D>& u : v) {
+  for (Vec<D>& u : out) {
     u -= c;
     r2 = std::max(r2, u.squaredNorm());
   }
@@ -158,6 +162,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
     begin = end;
   }
   x_built_.assign(x.begin(), x.end());
+  x_measured_ = x_built_;
   disp_.assign(x.size(), Vec<D>::Zero());
   rho_ = 0;
 }
@@ -165,8 +170,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
 // [SECTION] Motion since the build
 
 template <int D, int K>
-double SelfProximity<D, K>::ring_bound(MotionBounds& m, int a) {
-  if (m.ring_valid) return m.ring[a];
+void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
   // good share of them (measured: a lazy cell-by-cell version cost more on both benchmarks).
   const int nv = topo_.vertex_count, nc = static_cast<int>(cells_.size());
@@ -191,17 +195,23 @@ double SelfProximity<D, K>::ring_bound(MotionBounds& m, int a) {
     m.ring[c] = 3 * std::sqrt(w);
   }
   m.ring_valid = true;
-  return m.ring[a];
 }
 
 template <int D, int K>
 bool SelfProximity<D, K>::measure(std::span<const Vec<D>> x) {
-  rho_ = std::numeric_limits<double>::infinity();
-  if (!coherent_ || radius_ < 0 || x_built_.size() != x.size()) return false;
-  disp_.resize(x.size());
-  for (std::size_t v = 0; v < x.size(); ++v) disp_[v] = x[v] - x_built_[v];
-  rho_ = centre_and_radius<D>(disp_);
-  return std::isfinite(rho_);  // a non-finite vertex: rebuild (its box is all space)
+  if (!coherent_ || radius_ < 0 || x_built_.size() != x.size()) {
+    rho_ = std::numeric_limits<double>::infinity();
+    return false;
+  }
+  // A physics step asks for its pairs and then for its step from the same positions.
+  if (std::equal(x.begin(), x.end(), x_measured_.begin(), x_measured_.end())) return true;
+  rho_ = centred_difference<D>(x, x_built_, disp_);
+  if (!std::isfinite(rho_)) {  // a non-finite vertex: rebuild (its box is all space)
+    x_measured_.clear();
+    return false;
+  }
+  x_measured_.assign(x.begin(), x.end());
+  return true;
 }
 
 template <int D, int K>
@@ -214,12 +224,11 @@ void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
   const int nc = static_cast<int>(cells_.size());
   if (x_ring_.size() == x.size()) {
     if (std::equal(x.begin(), x.end(), x_ring_.begin())) return;  // where it stopped (a step's x1)
-    ring_move_.resize(x.size());
-    for (std::size_t v = 0; v < x.size(); ++v) ring_move_[v] = x[v] - x_ring_[v];
-    const double rho = centre_and_radius<D>(ring_move_);
+    const double rho = centred_difference<D>(x, x_ring_, ring_move_);
     if (std::isfinite(rho)) {
       ring_motion_.reset(&ring_move_, rho);
-      for (int a = 0; a < nc; ++a) run_odometer(a, std::min(2 * rho, ring_bound(ring_motion_, a)));
+      const double* ring = ring_bounds(ring_motion_);
+      for (int a = 0; a < nc; ++a) run_odometer(a, std::min(2 * rho, ring[a]));
       x_ring_.assign(x.begin(), x.end());
       return;
     }
@@ -447,9 +456,7 @@ bool SelfProximity<D, K>::prepare_step(std::span<const Vec<D>> x0, std::span<con
                                        double thickness) {
   check(x0.size());
   check(x1.size());
-  step_.resize(x0.size());
-  for (std::size_t v = 0; v < x0.size(); ++v) step_[v] = x1[v] - x0[v];
-  const double step_rho = centre_and_radius<D>(step_);
+  const double step_rho = centred_difference<D>(x1, x0, step_);
   step_motion_.reset(&step_, step_rho);
   if (coherent_ && std::isfinite(step_rho)) {
     const bool have = measure(x0);
@@ -483,7 +490,8 @@ Impact<D> SelfProximity<D, K>::earliest_impact(std::span<const Vec<D>> x0,
 #define S4D_INSTANTIATE(D)            \
   template class SelfProximity<D, 2>; \
   template class SelfProximity<D, 3>; \
-  template double prox_detail::centre_and_radius<D>(std::vector<Vec<D>>&);
+  template double prox_detail::centred_difference<D>(std::span<const Vec<D>>, std::span<const Vec<D>>, \
+                                                     std::vector<Vec<D>>&);
 S4D_INSTANTIATE(2)
 S4D_INSTANTIATE(3)
 S4D_INSTANTIATE(4)

@@ -114,7 +114,7 @@ class SelfProximity {
   };
   // The motion bounds of one displacement field u (nv, centred), coarse to fine, the finer ones
   // worked out only when a coarser one does not settle a pair: every |u| <= rho (so every
-  // M_ab <= 2 rho); per cell, a bound of M_ab over all its ring partners (ring_bound, never more
+  // M_ab <= 2 rho); per cell, a bound of M_ab over all its ring partners (ring_bounds, never more
   // than 2 rho); per pair, M_ab itself (max_relative).
   struct MotionBounds {
     const std::vector<Vec<D>>* u = nullptr;
@@ -128,9 +128,13 @@ class SelfProximity {
       ring_valid = false;
     }
   };
-  // 3 × the largest |u_p - u_q| over the edges at cell a's vertices and their neighbours: three
-  // such edges join any vertex of a to any vertex of a ring partner.
-  double ring_bound(MotionBounds& m, int a);
+  // Per cell a, 3 × the largest |u_p - u_q| over the edges at a's vertices and their neighbours:
+  // three such edges join any vertex of a to any vertex of a ring partner.
+  const double* ring_bounds(MotionBounds& m) {
+    if (!m.ring_valid) compute_ring_bounds(m);
+    return m.ring.data();
+  }
+  void compute_ring_bounds(MotionBounds& m);
 
   void check(std::size_t n) const;
   // Displacements since the build for x (disp_, rho_); false when there is no build to
@@ -239,6 +243,7 @@ class SelfProximity {
   std::vector<std::pair<std::uint64_t, int>> sort_keys_;  // scratch of the answers' sort
   std::vector<ProximityPair<D>> sort_scratch_;
   std::vector<Vec<D>> x_built_;    // positions at the build
+  std::vector<Vec<D>> x_measured_;  // positions disp_ and rho_ were measured at (empty: none)
   std::vector<Vec<D>> disp_;       // nv: displacement since the build, less a common centre
   double rho_ = 0;                 // every |disp_| is <= rho_ (so every M_ab <= 2 rho_)
   std::vector<Vec<D>> step_;       // nv: motion of the current step, less a common centre
@@ -249,10 +254,11 @@ class SelfProximity {
 };
 
 namespace prox_detail {
-// Centres the vectors v (subtracts the centre of their bounding box) and returns the radius of
-// the ball about it that holds them all (+inf if one is not finite).
+// out = a - b less the centre of its bounding box; returns the radius of the ball about that
+// centre that holds every out[v] (+inf if one is not finite).
 template <int D>
-double centre_and_radius(std::vector<Vec<D>>& v);
+double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
+                          std::vector<Vec<D>>& out);
 // max |u_i - u_j| over vertices i of cell a and j of cell b.
 template <int D, int K>
 inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
@@ -332,13 +338,15 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   // The ring's odometer runs on to x1 with the step's own bounds: the next step starts where this
   // one ends (unless its fail-safe stopped vertices) and finds nothing to measure.
   const double step_coarse = 2 * step_motion_.rho;
+  const double* ring = nullptr;  // the step's ring bounds, once a cell needs them
   for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
     const double odo = ring_odo_[a];
     if (ring_min_[a] - odo - step_coarse > th) {
       run_odometer(a, step_coarse);
       continue;
     }
-    const double reach = std::min(step_coarse, ring_bound(step_motion_, a));
+    if (!ring) ring = ring_bounds(step_motion_);
+    const double reach = std::min(step_coarse, ring[a]);
     if (ring_min_[a] - odo - reach > th) {
       run_odometer(a, reach);
       continue;
