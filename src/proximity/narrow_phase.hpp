@@ -3,6 +3,8 @@
 // then the exact kernels of closest_points.hpp / continuous_collision.hpp).
 #pragma once
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -43,39 +45,41 @@ Simplex<D, K> gather(std::span<const Vec<D>> x, const Cell<K>& c) {
 
 // A cell with a non-finite vertex gets the whole space as its box: it stays a candidate with
 // every other cell, and the exact kernels (NaN distance, contact at once) decide what it means.
-template <int D>
-void add_point(Box<D>& b, const Vec<D>& p) {
-  if (p.allFinite()) {
-    b.add(p);
-  } else {
+// One finiteness test a box (the sum of every coordinate: NaN or infinite if one is, or if
+// huge coordinates overflow, which only makes the box larger).
+template <int D, int K, int T>
+Box<D> cell_box(const std::array<std::span<const Vec<D>>, T>& x, const Cell<K>& c) {
+  Box<D> b;
+  b.lo = b.hi = x[0][c[0]];
+  double sum = 0;
+  for (int t = 0; t < T; ++t)
+    for (int i = 0; i < K; ++i) {
+      const Vec<D>& p = x[t][c[i]];
+      b.lo = b.lo.cwiseMin(p);
+      b.hi = b.hi.cwiseMax(p);
+      sum += p.sum();
+    }
+  if (!std::isfinite(sum)) {
     b.lo.setConstant(-std::numeric_limits<double>::infinity());
     b.hi.setConstant(std::numeric_limits<double>::infinity());
   }
+  return b;
 }
 
 template <int D, int K>
 void static_boxes(std::span<const Vec<D>> x, const std::vector<Cell<K>>& cells,
                   std::vector<Box<D>>& boxes) {
   boxes.resize(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    Box<D> b;
-    for (int v : cells[i]) add_point<D>(b, x[v]);
-    boxes[i] = b;
-  }
+  const std::array<std::span<const Vec<D>>, 1> at{x};
+  for (std::size_t i = 0, n = cells.size(); i < n; ++i) boxes[i] = cell_box<D, K, 1>(at, cells[i]);
 }
 
 template <int D, int K>
 void swept_boxes(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
                  const std::vector<Cell<K>>& cells, std::vector<Box<D>>& boxes) {
   boxes.resize(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    Box<D> b;
-    for (int v : cells[i]) {
-      add_point<D>(b, x0[v]);
-      add_point<D>(b, x1[v]);
-    }
-    boxes[i] = b;
-  }
+  const std::array<std::span<const Vec<D>>, 2> at{x0, x1};
+  for (std::size_t i = 0, n = cells.size(); i < n; ++i) boxes[i] = cell_box<D, K, 2>(at, cells[i]);
 }
 
 // Euclidean gap of two boxes, a lower bound of the distance of anything inside them (0 for a

@@ -357,11 +357,12 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
       if (gap - odo - reach <= th) {
         const int b = topo_.ring[k];
         const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
-        double lower = gap - odo;
-        if (!(lower - s > th)) {
-          if (step_candidate(a, b, ring_hints_[k], x0, th, s, lower)) f(a, b);
-          gap = std::max(gap, lower + odo);
-        }
+        // Its cached axis first: it usually proves the pair far enough apart for many steps.
+        double lower = std::max(gap - odo, axis_bound(a, b, ring_hints_[k].axis, x0));
+        if (!(lower - s > th) && step_candidate(a, b, ring_hints_[k], x0, th, s, lower)) f(a, b);
+        // At x1 the pair is at least lower - s apart, and the odometer will have run on by reach
+        // (>= s): the pair keeps what its own motion did not use, or it would stay due.
+        gap = std::max(gap, lower - s + odo + reach);
       }
       lowest = std::min(lowest, gap);
     }
