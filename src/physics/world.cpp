@@ -79,6 +79,7 @@ void World<D>::clamp_motion(double dt) {
       model_.params.max_step_motion > 0 ? model_.params.max_step_motion : model_.params.thickness;
   for (int i = 0; i < model_.nv; ++i) {
     const Vec<D> d = data_.x[i] - data_.x0[i];
+    if (!(d.squaredNorm() > limit * limit)) continue;  // the common case, without a square root
     const double len = d.norm();
     if (len > limit) {
       data_.x[i] = data_.x0[i] + d * (limit / len);
