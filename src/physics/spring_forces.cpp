@@ -3,9 +3,12 @@
 // the 64² cloth's 24k springs: 300 µs → 165 µs a pass.
 #include "physics/spring_forces.hpp"
 
-#include <immintrin.h>
-
 #include <cmath>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define S4D_X86 1
+#endif
 
 namespace s4d {
 
@@ -35,6 +38,7 @@ void spring_forces(std::span<const Spring> springs, double beta, double kd,
   }
 }
 
+#if S4D_X86
 #define S4D_AVX __attribute__((target("avx"), always_inline)) inline
 
 // The dot products of four pairs of R^4 vectors, summed in Eigen's order for SSE2 pairs,
@@ -94,6 +98,7 @@ __attribute__((target("avx"))) void linear_springs_avx_kernel(std::span<const Sp
   }
   spring_forces<4, true>(springs.subspan(i), 0, kd, x, v, force);
 }
+#endif  // S4D_X86
 
 }  // namespace
 
@@ -106,10 +111,14 @@ void linear_springs_portable(std::span<const Spring> springs, double kd, std::sp
 
 bool linear_springs_avx(std::span<const Spring> springs, double kd, std::span<const Vec<4>> x,
                         std::span<const Vec<4>> v, std::span<Vec<4>> force) {
+#if S4D_X86
   static const bool has_avx = __builtin_cpu_supports("avx");
   if (!has_avx) return false;
   linear_springs_avx_kernel(springs, kd, x, v, force);
   return true;
+#else
+  return false;
+#endif
 }
 
 }  // namespace spring_detail
