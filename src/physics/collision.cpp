@@ -19,8 +19,8 @@ constexpr double kPushFraction = 0.5;
 // Pairs are gathered a little beyond δ so that one approaching within the step is seen in time.
 constexpr double kGatherFactor = 1.5;
 // The proximity list reaches (1 + skin) × the gather distance. Measured on the crumpled 64² cloth
-// (instructions a step under callgrind, steps 601-700 of bench/physics_bench's scene): skin 0.25
-// → 11.8 M, 0.5 → 11.0 M, 1 → 12.6 M; a wider list costs more to build than its rarer rebuilds
+// (instructions a step under callgrind, steps 611-710 of bench/physics_bench's scene): skin 0.35
+// → 8.68 M, 0.5 → 8.50 M, 0.75 → 9.66 M; a wider list costs more to build than its rarer rebuilds
 // save.
 constexpr double kProximitySkin = 0.5;
 // Cap of the continuous test's iterations per pair (see failsafe_pass).

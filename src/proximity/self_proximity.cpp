@@ -441,6 +441,13 @@ bool SelfProximity<D, K>::step_candidate(int a, int b, Hints& h, std::span<const
   // close pair's distance runs every axis).
   ++bounds_tightened_;
   lower = std::max(lower, axis_bound(a, b, h.axis, x0));
+  return step_candidate_past_axis(a, b, h, x0, thickness, s, lower);
+}
+
+template <int D, int K>
+bool SelfProximity<D, K>::step_candidate_past_axis(int a, int b, Hints& h,
+                                                   std::span<const Vec<D>> x0, double thickness,
+                                                   double s, double& lower) {
   if (!(lower - s > thickness)) {
     Vec<D> best = Vec<D>::Zero();
     lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x0, cells_[a]),

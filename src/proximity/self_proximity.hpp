@@ -186,6 +186,10 @@ class SelfProximity {
   // `thickness` (`lower` in: the bound known, out: the bound at x0).
   bool step_candidate(int a, int b, Hints& h, std::span<const Vec<D>> x0, double thickness,
                       double s, double& lower);
+  // The same once `lower` already holds the gap along the pair's cached axis: the separating
+  // axes, only if that was not enough.
+  bool step_candidate_past_axis(int a, int b, Hints& h, std::span<const Vec<D>> x0,
+                                double thickness, double s, double& lower);
 
   std::vector<Cell<K>> cells_;
   int max_index_ = -1;
@@ -357,9 +361,13 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
       if (gap - odo - reach <= th) {
         const int b = topo_.ring[k];
         const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
-        // Its cached axis first: it usually proves the pair far enough apart for many steps.
+        // Its cached axis first, even when its own motion would settle it: the axis usually
+        // proves the pair far enough apart for many steps.
+        ++bounds_tightened_;
         double lower = std::max(gap - odo, axis_bound(a, b, ring_hints_[k].axis, x0));
-        if (!(lower - s > th) && step_candidate(a, b, ring_hints_[k], x0, th, s, lower)) f(a, b);
+        if (!(lower - s > th) &&  // most are settled here, without a call
+            step_candidate_past_axis(a, b, ring_hints_[k], x0, th, s, lower))
+          f(a, b);
         // At x1 the pair is at least lower - s apart, and the odometer will have run on by reach
         // (>= s): the pair keeps what its own motion did not use, or it would stay due.
         gap = std::max(gap, lower - s + odo + reach);
