@@ -173,26 +173,31 @@ template <int D, int K>
 void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
   // good share of them (measured: a lazy cell-by-cell version cost more on both benchmarks).
+  // Raw pointers: through the vectors, every store would make the compiler reload their data.
   const int nv = topo_.vertex_count, nc = static_cast<int>(cells_.size());
-  const std::vector<Vec<D>>& u = *m.u;
+  const Vec<D>* u = m.u->data();
   m.edge_max.assign(nv, 0.0);
+  double* own = m.edge_max.data();  // per vertex: the largest |u_p - u_q|² of its edges
   for (const auto& e : topo_.edges) {
     const double d = (u[e[0]] - u[e[1]]).squaredNorm();
-    m.edge_max[e[0]] = std::max(m.edge_max[e[0]], d);
-    m.edge_max[e[1]] = std::max(m.edge_max[e[1]], d);
+    own[e[0]] = std::max(own[e[0]], d);
+    own[e[1]] = std::max(own[e[1]], d);
   }
-  m.around.resize(nv);
-  for (int v = 0; v < nv; ++v) {
-    double w = m.edge_max[v];
-    for (int n = topo_.neighbour_offset[v]; n < topo_.neighbour_offset[v + 1]; ++n)
-      w = std::max(w, m.edge_max[topo_.neighbours[n]]);
-    m.around[v] = w;
+  m.around.assign(m.edge_max.begin(), m.edge_max.end());
+  double* around = m.around.data();  // the same over the vertex and its neighbours
+  for (const auto& e : topo_.edges) {
+    const double o0 = own[e[0]], o1 = own[e[1]];
+    around[e[0]] = std::max(around[e[0]], o1);
+    around[e[1]] = std::max(around[e[1]], o0);
   }
+  for (int v = 0; v < nv; ++v) around[v] = 3 * std::sqrt(around[v]);  // monotone: once a vertex
   m.ring.resize(nc);
+  double* ring = m.ring.data();
+  const Cell<K>* cells = cells_.data();
   for (int c = 0; c < nc; ++c) {
-    double w = 0;
-    for (int v : cells_[c]) w = std::max(w, m.around[v]);
-    m.ring[c] = 3 * std::sqrt(w);
+    double w = around[cells[c][0]];
+    for (int i = 1; i < K; ++i) w = std::max(w, around[cells[c][i]]);
+    ring[c] = w;
   }
   m.ring_valid = true;
 }
