@@ -3,7 +3,55 @@
 
 #include <algorithm>
 
+#if defined(__x86_64__) || defined(__i386__)
+#define S4D_X86 1
+#endif
+
 namespace s4d {
+
+namespace bvh_detail {
+#if S4D_X86
+const bool kLeafGapsAvx = __builtin_cpu_supports("avx");
+#else
+const bool kLeafGapsAvx = false;
+#endif
+}  // namespace bvh_detail
+
+#if S4D_X86
+namespace {
+// Eight lanes at once; per lane the operations of the SSE path, in its order (no FMA in "avx").
+// `lo`/`hi`: the leaf's lanes, eight floats an axis.
+__attribute__((target("avx"))) unsigned gaps2_avx(const float* a_lo, const float* a_hi,
+                                                  const float (*lo)[8], const float (*hi)[8],
+                                                  int dims, float r2, float* out) {
+  const __m256 zero = _mm256_setzero_ps();
+  __m256 acc = zero;
+  for (int axis = 0; axis < dims; ++axis) {
+    const __m256 g = _mm256_max_ps(
+        _mm256_max_ps(_mm256_sub_ps(_mm256_loadu_ps(lo[axis]), _mm256_set1_ps(a_hi[axis])),
+                      _mm256_sub_ps(_mm256_set1_ps(a_lo[axis]), _mm256_loadu_ps(hi[axis]))),
+        zero);
+    acc = _mm256_add_ps(acc, _mm256_mul_ps(g, g));
+  }
+  acc = _mm256_mul_ps(acc, _mm256_set1_ps(1 - 1e-6f));
+  _mm256_storeu_ps(out, acc);
+  return static_cast<unsigned>(
+      _mm256_movemask_ps(_mm256_cmp_ps(acc, _mm256_set1_ps(r2), _CMP_LE_OQ)));
+}
+}  // namespace
+#endif
+
+template <int D>
+unsigned Bvh<D>::leaf_gaps2_avx(int k, int leaf, float r2, float out[kLeafSize]) const {
+  static_assert(kLeafSize == 8, "one AVX register holds a leaf");
+#if S4D_X86
+  const LeafLanes& l = lanes_[leaf];
+  return gaps2_avx(prim_f_[k].lo, prim_f_[k].hi, l.lo, l.hi, D, r2, out);
+#else
+  (void)k, (void)leaf, (void)r2, (void)out;
+  return 0;  // never called: kLeafGapsAvx is false
+#endif
+}
 
 template <int D>
 void Bvh<D>::build(std::span<const Box<D>> boxes) {
