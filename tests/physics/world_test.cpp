@@ -19,8 +19,12 @@ void* operator new(std::size_t n) {
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
+// GCC sees free() meet a pointer from (this) operator new and warns; here the pair is malloc/free.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace s4d {
 namespace {
@@ -179,7 +183,9 @@ TEST(World, AdversarialRunStaysFiniteSeparatedAndBounded) {
     }
     w.step();
     worst_energy = std::max(worst_energy, w.kinetic_energy() + w.spring_energy());
-    if (s % 10000 == 9999) ASSERT_GT(w.min_separation(0.05), 0.99 * eta) << "step " << s;
+    if (s % 10000 == 9999) {
+      ASSERT_GT(w.min_separation(0.05), 0.99 * eta) << "step " << s;
+    }
   }
   for (const Vec4& x : w.positions()) ASSERT_TRUE(x.allFinite());
   for (const Vec4& v : w.velocities()) ASSERT_TRUE(v.allFinite());
