@@ -11,7 +11,9 @@ namespace s4d {
 
 namespace bvh_detail {
 #if S4D_X86
-const bool kLeafGapsAvx = __builtin_cpu_supports("avx");
+// A static initialiser may run before libgcc's own: initialise the CPU data first. (Read during
+// another static initialiser, the flag is still false: the portable way, equally right.)
+const bool kLeafGapsAvx = (__builtin_cpu_init(), __builtin_cpu_supports("avx"));
 #else
 const bool kLeafGapsAvx = false;
 #endif
