@@ -195,7 +195,9 @@ TEST(ClosestPoints, ActiveSetCertifiesGenericPairsAndParallelLayers) {
       const bool ok = prox_detail::closest_points_active_set<4, 3, 3>(lower, upper, code, r);
       certified += ok;
       ++total;
-      if (ok) EXPECT_NEAR(r.distance, gap, 1e-15);
+      if (ok) {
+        EXPECT_NEAR(r.distance, gap, 1e-15);
+      }
     }
   EXPECT_EQ(certified, total);
 }

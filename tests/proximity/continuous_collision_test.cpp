@@ -61,8 +61,9 @@ void check_never_misses(unsigned seed, int count) {
     if (r.hit) {
       // Stopped early by at most the tolerance: the distance there is within reach of δ.
       const double speed = relative_speed_bound<D, KA, KB>(a0, a1, b0, b1);
-      if (r.iterations < opt.max_iterations)
+      if (r.iterations < opt.max_iterations) {
         EXPECT_LE(r.at_t.distance, opt.thickness + speed * opt.time_tolerance * 1.0001 + 1e-15);
+      }
     }
   }
   EXPECT_GT(hits, count / 20);  // the generator does produce contacts

@@ -214,8 +214,9 @@ void check_coherent_sequence(unsigned seed) {
             a0[i] = x[cells[a][i]], a1[i] = next[cells[a][i]];
             b0[i] = x[cells[b][i]], b1[i] = next[cells[b][i]];
           }
-          if (earliest_contact<D, K, K>(a0, a1, b0, b1, opt).hit)
+          if (earliest_contact<D, K, K>(a0, a1, b0, b1, opt).hit) {
             EXPECT_TRUE(offered.count({a, b})) << "step " << step << " missed " << a << "," << b;
+          }
         }
     }
     x = next;
