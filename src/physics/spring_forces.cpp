@@ -5,9 +5,10 @@
 
 #include <cmath>
 
-#if defined(__x86_64__) || defined(__i386__)
+#include "core/cpu.hpp"
+
+#if S4D_X86
 #include <immintrin.h>
-#define S4D_X86 1
 #endif
 
 namespace s4d {
@@ -112,8 +113,7 @@ void linear_springs_portable(std::span<const Spring> springs, double kd, std::sp
 bool linear_springs_avx(std::span<const Spring> springs, double kd, std::span<const Vec<4>> x,
                         std::span<const Vec<4>> v, std::span<Vec<4>> force) {
 #if S4D_X86
-  static const bool has_avx = __builtin_cpu_supports("avx");
-  if (!has_avx) return false;
+  if (!cpu::kHasAvx) return false;
   linear_springs_avx_kernel(springs, kd, x, v, force);
   return true;
 #else

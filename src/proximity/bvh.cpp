@@ -3,21 +3,9 @@
 
 #include <algorithm>
 
-#if defined(__x86_64__) || defined(__i386__)
-#define S4D_X86 1
-#endif
+#include "core/cpu.hpp"
 
 namespace s4d {
-
-namespace bvh_detail {
-#if S4D_X86
-// A static initialiser may run before libgcc's own: initialise the CPU data first. (Read during
-// another static initialiser, the flag is still false: the portable way, equally right.)
-const bool kLeafGapsAvx = (__builtin_cpu_init(), __builtin_cpu_supports("avx"));
-#else
-const bool kLeafGapsAvx = false;
-#endif
-}  // namespace bvh_detail
 
 #if S4D_X86
 namespace {
@@ -51,7 +39,7 @@ unsigned Bvh<D>::leaf_gaps2_avx(int k, int leaf, float r2, float out[kLeafSize])
   return gaps2_avx(prim_f_[k].lo, prim_f_[k].hi, l.lo, l.hi, D, r2, out);
 #else
   (void)k, (void)leaf, (void)r2, (void)out;
-  return 0;  // never called: kLeafGapsAvx is false
+  return 0;  // never called: cpu::kHasAvx is false
 #endif
 }
 

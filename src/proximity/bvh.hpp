@@ -12,6 +12,7 @@
 #include <immintrin.h>
 #endif
 
+#include "core/cpu.hpp"
 #include "core/vec.hpp"
 
 namespace s4d {
@@ -170,10 +171,9 @@ class Bvh {
   unsigned leaf_gaps2(int k, int l, float r2, float out[kLeafSize]) const;
   // Its two ways, bit for bit the same gaps (the same operations in the same order): four lanes
   // at a time in SSE (or scalar code), and all eight in one AVX register (bvh.cpp; call it only
-  // when has_avx()), which leaf_gaps2 takes when the CPU has AVX.
+  // when cpu::kHasAvx), which leaf_gaps2 takes when the CPU has AVX.
   unsigned leaf_gaps2_portable(int k, int l, float r2, float out[kLeafSize]) const;
   unsigned leaf_gaps2_avx(int k, int l, float r2, float out[kLeafSize]) const;
-  static bool has_avx();
   // Whether the box of the primitive in slot k may be within sqrt(r2) of leaf l's box (the same
   // rounding as leaf_gaps2): one test that spares leaf_gaps2 for a primitive far from the leaf.
   bool prim_near_leaf(int k, int l, float r2) const {
@@ -228,20 +228,9 @@ class Bvh {
   long long builds_ = 0;
 };
 
-namespace bvh_detail {
-// Whether leaf_gaps2 may take its AVX path: x86 CPUs that have it (the build flags stay SSE2).
-extern const bool kLeafGapsAvx;
-}  // namespace bvh_detail
-
-template <int D>
-bool Bvh<D>::has_avx() {
-  return bvh_detail::kLeafGapsAvx;
-}
-
 template <int D>
 inline unsigned Bvh<D>::leaf_gaps2(int k, int leaf, float r2, float out[kLeafSize]) const {
-  return bvh_detail::kLeafGapsAvx ? leaf_gaps2_avx(k, leaf, r2, out)
-                                  : leaf_gaps2_portable(k, leaf, r2, out);
+  return cpu::kHasAvx ? leaf_gaps2_avx(k, leaf, r2, out) : leaf_gaps2_portable(k, leaf, r2, out);
 }
 
 template <int D>

@@ -120,7 +120,9 @@ class SelfProximity {
     const std::vector<Vec<D>>* u = nullptr;
     double rho = 0;
     std::vector<double> ring;             // per cell, once ring_valid
-    std::vector<double> edge_max, around;  // scratch: per vertex, over its edges; with neighbours'
+    // Scratch, per vertex: the largest squared change of its edges; 3 × the root of that over the
+    // vertex and its neighbours.
+    std::vector<double> edge_max, around;
     bool ring_valid = false;
     void reset(const std::vector<Vec<D>>* field, double radius) {
       u = field;

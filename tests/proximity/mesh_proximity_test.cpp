@@ -7,6 +7,7 @@
 #include <limits>
 #include <set>
 
+#include "core/cpu.hpp"
 #include "core/error.hpp"
 #include "proximity/reference.hpp"
 
@@ -422,7 +423,7 @@ void expect_leaf_gaps_ways_agree(std::mt19937& rng) {
 }
 
 TEST(MeshProximity, AvxLeafGapsEqualThePortableOnes) {
-  if (!Bvh<4>::has_avx()) GTEST_SKIP() << "this CPU has no AVX";
+  if (!cpu::kHasAvx) GTEST_SKIP() << "this CPU has no AVX";
   std::mt19937 rng(8);
   for (int round = 0; round < 5; ++round) {
     expect_leaf_gaps_ways_agree<2>(rng);
