@@ -5,11 +5,7 @@
 
 #include <cmath>
 
-#include "core/cpu.hpp"
-
-#if S4D_X86
-#include <immintrin.h>
-#endif
+#include "core/avx4.hpp"
 
 namespace s4d {
 
@@ -40,27 +36,13 @@ void spring_forces(std::span<const Spring> springs, double beta, double kd,
 }
 
 #if S4D_X86
-#define S4D_AVX __attribute__((target("avx"), always_inline)) inline
+using avx4::load;
 
-// The dot products of four pairs of R^4 vectors, summed in Eigen's order for SSE2 pairs,
-// (p0 + p2) + (p1 + p3), so that each equals the portable kernel's. Lanes come out as springs
-// 0, 2, 1, 3.
-S4D_AVX __m256d dots4(__m256d p0, __m256d p1, __m256d p2, __m256d p3) {
-  const __m256d s01 = _mm256_add_pd(_mm256_permute2f128_pd(p0, p1, 0x20),
-                                    _mm256_permute2f128_pd(p0, p1, 0x31));
-  const __m256d s23 = _mm256_add_pd(_mm256_permute2f128_pd(p2, p3, 0x20),
-                                    _mm256_permute2f128_pd(p2, p3, 0x31));
-  return _mm256_hadd_pd(s01, s23);
-}
-
-S4D_AVX __m256d load(const Vec<4>& p) { return _mm256_loadu_pd(p.data()); }
-
-S4D_AVX void add_force(Vec<4>& fa, Vec<4>& fb, __m256d f) {
+__attribute__((target("avx"), always_inline)) inline void add_force(Vec<4>& fa, Vec<4>& fb,
+                                                                    __m256d f) {
   _mm256_storeu_pd(fa.data(), _mm256_add_pd(load(fa), f));
   _mm256_storeu_pd(fb.data(), _mm256_sub_pd(load(fb), f));
 }
-
-#undef S4D_AVX
 
 // No fused multiply-add (FMA is not part of "avx"): every product is rounded as in the portable
 // kernel.
@@ -79,18 +61,18 @@ __attribute__((target("avx"))) void linear_springs_avx_kernel(std::span<const Sp
       p[j] = _mm256_mul_pd(d[j], d[j]);
       q[j] = _mm256_mul_pd(_mm256_sub_pd(load(v[s[j].b]), load(v[s[j].a])), d[j]);
     }
-    const __m256d len2 = dots4(p[0], p[1], p[2], p[3]);
+    const __m256d len2 = avx4::sums4(p[0], p[1], p[2], p[3]);
     if (_mm256_movemask_pd(_mm256_cmp_pd(len2, tiny, _CMP_GT_OQ)) != 0xF) {
       // Coincident (or non-finite) ends in this group: the portable kernel skips them.
       spring_forces<4, true>(springs.subspan(i, 4), 0, kd, x, v, force);
       continue;
     }
     const __m256d inv = _mm256_div_pd(one, _mm256_sqrt_pd(len2));
-    // Lanes in the order of dots4: springs 0, 2, 1, 3.
+    // Lanes in the order of sums4: springs 0, 2, 1, 3.
     const __m256d rest = _mm256_set_pd(s[3].rest, s[1].rest, s[2].rest, s[0].rest);
     const __m256d k = _mm256_set_pd(s[3].k, s[1].k, s[2].k, s[0].k);
     const __m256d mag = _mm256_mul_pd(k, _mm256_sub_pd(_mm256_mul_pd(len2, inv), rest));
-    const __m256d damp = _mm256_mul_pd(_mm256_mul_pd(kdv, dots4(q[0], q[1], q[2], q[3])), inv);
+    const __m256d damp = _mm256_mul_pd(_mm256_mul_pd(kdv, avx4::sums4(q[0], q[1], q[2], q[3])), inv);
     alignas(32) double c[4];
     _mm256_store_pd(c, _mm256_mul_pd(_mm256_add_pd(mag, damp), inv));
     constexpr int kLane[4] = {0, 2, 1, 3};

@@ -261,10 +261,14 @@ class SelfProximity {
 
 namespace prox_detail {
 // out = a - b less the centre of its bounding box; returns the radius of the ball about that
-// centre that holds every out[v] (+inf if one is not finite).
+// centre that holds every out[v] (+inf if one is not finite). Picks an AVX path at run time for
+// D = 4, with the same bits as the portable one.
 template <int D>
 double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
                           std::vector<Vec<D>>& out);
+template <int D>
+double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
+                                   std::vector<Vec<D>>& out);
 // max |u_i - u_j| over vertices i of cell a and j of cell b.
 template <int D, int K>
 inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
