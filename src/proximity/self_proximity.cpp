@@ -325,6 +325,20 @@ double SelfProximity<D, K>::axis_bound(int a, int b, const std::array<float, D>&
 }
 
 namespace {
+#if S4D_X86
+// The portable snapshot motion's bits (see max_pair_distance2_3x3).
+__attribute__((target("avx"))) double snapshot_motion_avx(const Vec<4>* x, const Cell<3>& a,
+                                                          const Cell<3>& b, const Vec<4>* x0) {
+  using avx4::load;
+  __m256d p[3], q[3];
+  for (int i = 0; i < 3; ++i) {
+    p[i] = _mm256_sub_pd(load(x[a[i]]), load(x0[i]));
+    q[i] = _mm256_sub_pd(load(x[b[i]]), load(x0[3 + i]));
+  }
+  return std::sqrt(max_pair_distance2_3x3(p, q));
+}
+#endif
+
 template <int D>
 void store_axis(const Vec<D>& n, std::array<float, D>& axis) {
   const double len = n.norm();
@@ -355,6 +369,10 @@ double SelfProximity<D, K>::test_pair(int a, int b, Hints& h, std::span<const Ve
 
 template <int D, int K>
 double SelfProximity<D, K>::snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const {
+#if S4D_X86
+  if constexpr (D == 4 && K == 3)
+    if (cpu::kHasAvx) return snapshot_motion_avx(x.data(), cells_[f.a], cells_[f.b], f.x0.data());
+#endif
   std::array<Vec<D>, 2 * K> d;
   for (int i = 0; i < K; ++i) {
     d[i] = x[cells_[f.a][i]] - f.x0[i];

@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "core/avx4.hpp"
 #include "proximity/bvh.hpp"
 #include "proximity/cell_topology.hpp"
 #include "proximity/cells.hpp"
@@ -269,13 +270,48 @@ double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
 template <int D>
 double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
                                    std::vector<Vec<D>>& out);
+#if S4D_X86
+// max |p_i - q_j|² over three points p and three q in R^4, the portable loop's bits: each squared
+// norm summed in its order (avx4::sums4), and a NaN one skipped as std::max(m2, NaN) skips it.
+S4D_AVX_INLINE double max_pair_distance2_3x3(const __m256d p[3], const __m256d q[3]) {
+  __m256d s[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const __m256d d = _mm256_sub_pd(p[i], q[j]);
+      s[3 * i + j] = _mm256_mul_pd(d, d);
+    }
+  __m256d m = _mm256_setzero_pd();  // max_pd(new, m) keeps m where new is NaN
+  m = _mm256_max_pd(avx4::sums4(s[0], s[1], s[2], s[3]), m);
+  m = _mm256_max_pd(avx4::sums4(s[4], s[5], s[6], s[7]), m);
+  m = _mm256_max_pd(avx4::sums4(s[8], s[8], s[8], s[8]), m);
+  return avx4::max_lane(m);
+}
+
+__attribute__((target("avx"))) inline double max_relative_avx(const Vec<4>* u, const Cell<3>& a,
+                                                              const Cell<3>& b) {
+  const __m256d p[3] = {avx4::load(u[a[0]]), avx4::load(u[a[1]]), avx4::load(u[a[2]])};
+  const __m256d q[3] = {avx4::load(u[b[0]]), avx4::load(u[b[1]]), avx4::load(u[b[2]])};
+  return std::sqrt(max_pair_distance2_3x3(p, q));
+}
+#endif
+
 // max |u_i - u_j| over vertices i of cell a and j of cell b.
 template <int D, int K>
-inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
+inline double max_relative_portable(const std::vector<Vec<D>>& u, const Cell<K>& a,
+                                    const Cell<K>& b) {
   double m2 = 0;
   for (int i = 0; i < K; ++i)
     for (int j = 0; j < K; ++j) m2 = std::max(m2, (u[a[i]] - u[b[j]]).squaredNorm());
   return std::sqrt(m2);
+}
+// The same, with an AVX path for triangles in R^4 (the same bits).
+template <int D, int K>
+inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
+#if S4D_X86
+  if constexpr (D == 4 && K == 3)
+    if (cpu::kHasAvx) return max_relative_avx(u.data(), a, b);
+#endif
+  return max_relative_portable<D, K>(u, a, b);
 }
 }  // namespace prox_detail
 

@@ -466,6 +466,27 @@ TEST(MeshProximity, AvxCentredDifferenceEqualsThePortableOne) {
   }
 }
 
+// The relative motion of two triangles' vertices, every bound of the coherent queries rests on.
+TEST(MeshProximity, AvxRelativeMotionEqualsThePortableOne) {
+  if (!cpu::kHasAvx) GTEST_SKIP() << "this CPU has no AVX";
+  std::mt19937 rng(10);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> pick(0, 19);
+  std::vector<Vec4> field(20);
+  for (int round = 0; round < 2000; ++round) {
+    for (Vec4& f : field)
+      for (int k = 0; k < 4; ++k) f[k] = std::ldexp(u(rng), round % 7 - 3);
+    const Cell<3> a{pick(rng), pick(rng), pick(rng)}, b{pick(rng), pick(rng), pick(rng)};
+    const double fast = prox_detail::max_relative<4, 3>(field, a, b);
+    const double ref = prox_detail::max_relative_portable<4, 3>(field, a, b);
+    ASSERT_EQ(std::memcmp(&fast, &ref, sizeof(double)), 0) << fast << " vs " << ref;
+    double brute = 0;
+    for (int i : a)
+      for (int j : b) brute = std::max(brute, (field[i] - field[j]).norm());
+    EXPECT_NEAR(ref, brute, 1e-15);
+  }
+}
+
 TEST(MeshProximity, BadInputIsAClearError) {
   EXPECT_THROW((SelfProximity<3, 3>({{0, 1, -2}})), Error);
   SelfProximity<3, 3> q({{0, 1, 5}});
