@@ -315,13 +315,68 @@ void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
 
 // [SECTION] Testing a pair, and the fringe
 
+namespace {
+#if S4D_X86
+// axis_gap's bits for two triangles in R^4 and a stored axis: its dot products in Eigen's order
+// (avx4::sums4); the extremes are exact whatever the order, and a NaN projection gives 0 as there.
+__attribute__((target("avx"))) double axis_bound_avx(const Vec<4>* x, const Cell<3>& a,
+                                                     const Cell<3>& b, const float* axis) {
+  using avx4::load;
+  const __m256d n = _mm256_cvtps_pd(_mm_loadu_ps(axis));
+  const __m256d nn = _mm256_mul_pd(n, n);
+  const double len2 = _mm256_cvtsd_f64(avx4::sums4(nn, nn, nn, nn));
+  if (!(len2 > 0)) return -std::numeric_limits<double>::infinity();
+  const double len = std::sqrt(len2);
+  const __m256d pa[3] = {_mm256_mul_pd(load(x[a[0]]), n), _mm256_mul_pd(load(x[a[1]]), n),
+                         _mm256_mul_pd(load(x[a[2]]), n)};
+  const __m256d pb[3] = {_mm256_mul_pd(load(x[b[0]]), n), _mm256_mul_pd(load(x[b[1]]), n),
+                         _mm256_mul_pd(load(x[b[2]]), n)};
+  const __m256d s1 = avx4::sums4(pa[0], pa[1], pa[2], pb[0]);  // a0, a2, a1, b0
+  const __m256d s2 = avx4::sums4(pb[1], pb[2], pb[1], pb[2]);  // b1, b1, b2, b2
+  const __m256d nan = _mm256_or_pd(_mm256_cmp_pd(s1, s1, _CMP_UNORD_Q), _mm256_cmp_pd(s2, s2, _CMP_UNORD_Q));
+  if (_mm256_movemask_pd(nan) != 0) return 0;
+  alignas(32) double d1[4], d2[4];
+  _mm256_store_pd(d1, s1);
+  _mm256_store_pd(d2, s2);
+  const double lo_a = std::min(std::min(d1[0], d1[2]), d1[1]);  // the portable order: a0, a1, a2
+  const double hi_a = std::max(std::max(d1[0], d1[2]), d1[1]);
+  const double lo_b = std::min(std::min(d1[3], d2[0]), d2[2]);
+  const double hi_b = std::max(std::max(d1[3], d2[0]), d2[2]);
+  const double gap = std::max(lo_b - hi_a, lo_a - hi_b);
+  const double scale = std::max(std::max(std::abs(lo_a), std::abs(hi_a)),
+                                std::max(std::abs(lo_b), std::abs(hi_b)));
+  return (gap - 1e-12 * scale) / len;
+}
+#endif
+}  // namespace
+
+namespace prox_detail {
+
 template <int D, int K>
-double SelfProximity<D, K>::axis_bound(int a, int b, const std::array<float, D>& axis,
-                                       std::span<const Vec<D>> x) const {
+double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                                const std::array<float, D>& axis) {
   Vec<D> n;
   for (int k = 0; k < D; ++k) n[k] = axis[k];
   if (!(n.squaredNorm() > 0)) return -std::numeric_limits<double>::infinity();
-  return axis_gap<D, K, K>(gather<D, K>(x, cells_[a]), gather<D, K>(x, cells_[b]), n);
+  return axis_gap<D, K, K>(gather<D, K>(x, a), gather<D, K>(x, b), n);
+}
+
+template <int D, int K>
+double stored_axis_gap(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                       const std::array<float, D>& axis) {
+#if S4D_X86
+  if constexpr (D == 4 && K == 3)
+    if (cpu::kHasAvx) return axis_bound_avx(x.data(), a, b, axis.data());
+#endif
+  return stored_axis_gap_portable<D, K>(x, a, b, axis);
+}
+
+}  // namespace prox_detail
+
+template <int D, int K>
+double SelfProximity<D, K>::axis_bound(int a, int b, const std::array<float, D>& axis,
+                                       std::span<const Vec<D>> x) const {
+  return stored_axis_gap<D, K>(x, cells_[a], cells_[b], axis);
 }
 
 namespace {
@@ -580,7 +635,13 @@ Impact<D> SelfProximity<D, K>::earliest_impact(std::span<const Vec<D>> x0,
   template double prox_detail::centred_difference<D>(std::span<const Vec<D>>, std::span<const Vec<D>>, \
                                                      std::vector<Vec<D>>&);                        \
   template double prox_detail::centred_difference_portable<D>(                                     \
-      std::span<const Vec<D>>, std::span<const Vec<D>>, std::vector<Vec<D>>&);
+      std::span<const Vec<D>>, std::span<const Vec<D>>, std::vector<Vec<D>>&);                     \
+  template double prox_detail::stored_axis_gap<D, 2>(std::span<const Vec<D>>, const Cell<2>&,      \
+                                                     const Cell<2>&, const std::array<float, D>&); \
+  template double prox_detail::stored_axis_gap<D, 3>(std::span<const Vec<D>>, const Cell<3>&,      \
+                                                     const Cell<3>&, const std::array<float, D>&); \
+  template double prox_detail::stored_axis_gap_portable<D, 3>(                                     \
+      std::span<const Vec<D>>, const Cell<3>&, const Cell<3>&, const std::array<float, D>&);
 S4D_INSTANTIATE(2)
 S4D_INSTANTIATE(3)
 S4D_INSTANTIATE(4)

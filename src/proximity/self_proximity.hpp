@@ -270,6 +270,15 @@ double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
 template <int D>
 double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
                                    std::vector<Vec<D>>& out);
+// The gap of cells a and b at x along a stored (float) axis: a lower bound of their distance,
+// -inf when the axis is zero. An AVX path for triangles in R^4 gives the portable bits.
+template <int D, int K>
+double stored_axis_gap(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                       const std::array<float, D>& axis);
+template <int D, int K>
+double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                                const std::array<float, D>& axis);
+
 #if S4D_X86
 // max |p_i - q_j|² over three points p and three q in R^4, the portable loop's bits: each squared
 // norm summed in its order (avx4::sums4), and a NaN one skipped as std::max(m2, NaN) skips it.

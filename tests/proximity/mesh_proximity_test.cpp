@@ -487,6 +487,38 @@ TEST(MeshProximity, AvxRelativeMotionEqualsThePortableOne) {
   }
 }
 
+// The gap along a pair's cached axis, the first re-proof of most pairs a query looks at again.
+TEST(MeshProximity, AvxStoredAxisGapEqualsThePortableOne) {
+  if (!cpu::kHasAvx) GTEST_SKIP() << "this CPU has no AVX";
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> pick(0, 11);
+  std::vector<Vec4> x(12);
+  int positive = 0;
+  for (int round = 0; round < 3000; ++round) {
+    for (Vec4& p : x)
+      for (int k = 0; k < 4; ++k) p[k] = u(rng) + (k == 0 && (&p - x.data()) >= 6 ? 1.5 : 0.0);
+    if (round % 50 == 7) x[3][2] = std::numeric_limits<double>::quiet_NaN();
+    std::array<float, 4> axis{};
+    if (round % 40 != 5)  // now and then a zero axis
+      for (float& c : axis) c = static_cast<float>(u(rng));
+    const Cell<3> a{pick(rng) % 6, pick(rng) % 6, pick(rng) % 6};
+    const Cell<3> b{6 + pick(rng) % 6, 6 + pick(rng) % 6, 6 + pick(rng) % 6};
+    const double fast = prox_detail::stored_axis_gap<4, 3>(x, a, b, axis);
+    const double ref = prox_detail::stored_axis_gap_portable<4, 3>(x, a, b, axis);
+    ASSERT_EQ(std::memcmp(&fast, &ref, sizeof(double)), 0) << fast << " vs " << ref;
+    positive += ref > 0;
+    // A lower bound of the distance: no pair of vertices is closer than a positive gap.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int i : a)
+      for (int j : b) nearest = std::min(nearest, (x[i] - x[j]).norm());
+    if (ref > 0) {
+      EXPECT_LE(ref, nearest);
+    }
+  }
+  EXPECT_GT(positive, 100);  // the test sees separating axes, not only overlaps
+}
+
 TEST(MeshProximity, BadInputIsAClearError) {
   EXPECT_THROW((SelfProximity<3, 3>({{0, 1, -2}})), Error);
   SelfProximity<3, 3> q({{0, 1, 5}});
