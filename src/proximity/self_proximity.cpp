@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/avx4.hpp"
 
@@ -18,6 +19,18 @@ namespace {
 // keeps pairs from going back and forth).
 constexpr double kPromoteMargins = 1.5;
 constexpr double kEvictMargins = 2.0;
+
+}  // namespace
+
+namespace {
+
+// Whether x holds the very positions of `then`: bit for bit, which memcmp tests far faster than
+// comparing coordinates. Only a -0 against a +0 differs from ==, and it costs a recomputation;
+// a NaN is never kept where this is asked (see measure and advance_ring).
+template <int D>
+bool same_bits(std::span<const Vec<D>> x, const std::vector<Vec<D>>& then) {
+  return x.size() == then.size() && std::memcmp(x.data(), then.data(), x.size_bytes()) == 0;
+}
 
 }  // namespace
 
@@ -266,7 +279,7 @@ bool SelfProximity<D, K>::measure(std::span<const Vec<D>> x) {
     return false;
   }
   // A physics step asks for its pairs and then for its step from the same positions.
-  if (std::equal(x.begin(), x.end(), x_measured_.begin(), x_measured_.end())) return true;
+  if (same_bits<D>(x, x_measured_)) return true;
   rho_ = centred_difference<D>(x, x_built_, disp_);
   if (!std::isfinite(rho_)) {  // a non-finite vertex: rebuild (its box is all space)
     x_measured_.clear();
@@ -285,7 +298,7 @@ template <int D, int K>
 void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
   const int nc = static_cast<int>(cells_.size());
   if (x_ring_.size() == x.size()) {
-    if (std::equal(x.begin(), x.end(), x_ring_.begin())) return;  // where it stopped (a step's x1)
+    if (same_bits<D>(x, x_ring_)) return;  // where it stopped (a step's x1)
     const double rho = centred_difference<D>(x, x_ring_, ring_move_);
     if (std::isfinite(rho)) {
       ring_motion_.reset(&ring_move_, rho);
@@ -310,7 +323,11 @@ void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
     ring_min_[a] = lowest;
     ring_odo_[a] = 0;
   }
-  x_ring_.assign(x.begin(), x.end());
+  // Non-finite positions are not a place to run on from: the next call restarts again.
+  if (all_finite<D>(x))
+    x_ring_.assign(x.begin(), x.end());
+  else
+    x_ring_.clear();
 }
 
 // [SECTION] Testing a pair, and the fringe
