@@ -411,14 +411,18 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
       double& gap = ring_gap_[k];  // +inf in the fringe
       if (gap - odo - reach <= th) {
         const int b = topo_.ring[k];
-        const double s = max_relative<D, K>(step_, cells_[a], cells_[b]);
         // Its cached axis first, even when its own motion would settle it: the axis usually
-        // proves the pair far enough apart for many steps.
+        // proves the pair far enough apart for many steps. Most are settled against the cell's
+        // bound (reach >= the pair's own motion s), without working out s (measured: physics
+        // step -2%, stepping impact -1.7%, though the pairs so settled keep less slack).
         ++bounds_tightened_;
         double lower = std::max(gap - odo, axis_bound(a, b, ring_hints_[k].axis, x0));
-        if (!(lower - s > th) &&  // most are settled here, without a call
-            step_candidate_past_axis(a, b, ring_hints_[k], x0, th, s, lower))
-          f(a, b);
+        double s = reach;
+        if (!(lower - reach > th)) {
+          s = max_relative<D, K>(step_, cells_[a], cells_[b]);
+          if (!(lower - s > th) && step_candidate_past_axis(a, b, ring_hints_[k], x0, th, s, lower))
+            f(a, b);
+        }
         // At x1 the pair is at least lower - s apart, and the odometer will have run on by reach
         // (>= s): the pair keeps what its own motion did not use, or it would stay due.
         gap = std::max(gap, lower - s + odo + reach);
