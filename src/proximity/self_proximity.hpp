@@ -384,8 +384,9 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   for (Tracked& p : listed_) {
     if (p.gap - coarse > th) continue;
     const double m0 = relative_motion(p.a, p.b);
-    const double s = max_relative<D, K>(step_, cells_[p.a], cells_[p.b]);
     double lower = p.gap - m0;
+    if (lower - 2 * step_motion_.rho > th) continue;  // the step's own motion is not needed
+    const double s = max_relative<D, K>(step_, cells_[p.a], cells_[p.b]);
     if (lower - s > th) continue;
     if (step_candidate(p.a, p.b, p.hints, x0, th, s, lower)) f(p.a, p.b);
     p.gap = std::max(p.gap, lower - m0);
