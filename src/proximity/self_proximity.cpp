@@ -239,6 +239,47 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
 
 // [SECTION] Motion since the build
 
+namespace {
+#if S4D_X86
+// The first pass of the ring bounds for whole groups of four edges: their squared changes in
+// registers (the portable bits, see avx4::sums4), then the scalar maxima. Returns how many edges
+// it did (the portable loop does the rest).
+__attribute__((target("avx"))) std::size_t edge_maxima_avx(const Vec<4>* u,
+                                                           const std::array<int, 2>* edges,
+                                                           std::size_t ne, double* own) {
+  using avx4::load;
+  std::size_t i = 0;
+  for (; i + 4 <= ne; i += 4) {
+    __m256d sq[4];
+    for (int j = 0; j < 4; ++j) {
+      const __m256d d = _mm256_sub_pd(load(u[edges[i + j][0]]), load(u[edges[i + j][1]]));
+      sq[j] = _mm256_mul_pd(d, d);
+    }
+    alignas(32) double d2[4];
+    _mm256_store_pd(d2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
+    constexpr int kLane[4] = {0, 2, 1, 3};
+    for (int j = 0; j < 4; ++j) {
+      const auto& e = edges[i + j];
+      const double d = d2[kLane[j]];
+      own[e[0]] = std::max(own[e[0]], d);
+      own[e[1]] = std::max(own[e[1]], d);
+    }
+  }
+  return i;
+}
+
+// 3 sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
+// bits); returns how many it did.
+__attribute__((target("avx"))) int triple_roots_avx(double* a, int n) {
+  const __m256d three = _mm256_set1_pd(3.0);
+  int v = 0;
+  for (; v + 4 <= n; v += 4)
+    _mm256_storeu_pd(a + v, _mm256_mul_pd(three, _mm256_sqrt_pd(_mm256_loadu_pd(a + v))));
+  return v;
+}
+#endif
+}  // namespace
+
 template <int D, int K>
 void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
@@ -248,7 +289,15 @@ void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   const Vec<D>* u = m.u->data();
   m.edge_max.assign(nv, 0.0);
   double* own = m.edge_max.data();  // per vertex: the largest |u_p - u_q|² of its edges
-  for (const auto& e : topo_.edges) {
+  const auto* edges = topo_.edges.data();
+  const std::size_t ne = topo_.edges.size();
+  std::size_t done = 0;
+#if S4D_X86
+  if constexpr (D == 4)
+    if (cpu::kHasAvx) done = edge_maxima_avx(u, edges, ne, own);
+#endif
+  for (std::size_t i = done; i < ne; ++i) {
+    const auto& e = edges[i];
     const double d = (u[e[0]] - u[e[1]]).squaredNorm();
     own[e[0]] = std::max(own[e[0]], d);
     own[e[1]] = std::max(own[e[1]], d);
@@ -260,7 +309,11 @@ void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
     around[e[0]] = std::max(around[e[0]], o1);
     around[e[1]] = std::max(around[e[1]], o0);
   }
-  for (int v = 0; v < nv; ++v) around[v] = 3 * std::sqrt(around[v]);  // monotone: once a vertex
+  int rooted = 0;  // 3 × the root, once a vertex (monotone: the same as once a cell)
+#if S4D_X86
+  if (cpu::kHasAvx) rooted = triple_roots_avx(around, nv);
+#endif
+  for (int v = rooted; v < nv; ++v) around[v] = 3 * std::sqrt(around[v]);
   m.ring.resize(nc);
   double* ring = m.ring.data();
   const Cell<K>* cells = cells_.data();
