@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/avx4.hpp"
-
 namespace s4d {
 
 using namespace prox_detail;
@@ -20,10 +18,6 @@ namespace {
 constexpr double kPromoteMargins = 1.5;
 constexpr double kEvictMargins = 2.0;
 
-}  // namespace
-
-namespace {
-
 // Whether x holds the very positions of `then`: bit for bit, which memcmp tests far faster than
 // comparing coordinates. Only a -0 against a +0 differs from ==, and it costs a recomputation;
 // a NaN is never kept where this is asked (see measure and advance_ring).
@@ -33,89 +27,6 @@ bool same_bits(std::span<const Vec<D>> x, const std::vector<Vec<D>>& then) {
 }
 
 }  // namespace
-
-namespace prox_detail {
-
-template <int D>
-double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
-                                   std::vector<Vec<D>>& out) {
-  out.resize(a.size());
-  if (a.empty()) return 0;
-  Vec<D> lo = a[0] - b[0], hi = lo;
-  Vec<D> zero = Vec<D>::Zero();  // stays zero while every coordinate is finite
-  for (std::size_t v = 0; v < a.size(); ++v) {
-    const Vec<D> u = a[v] - b[v];
-    out[v] = u;
-    lo = lo.cwiseMin(u);
-    hi = hi.cwiseMax(u);
-    zero += 0.0 * u;
-  }
-  if (!(zero.array() == 0.0).all()) return std::numeric_limits<double>::infinity();
-  const Vec<D> c = 0.5 * (lo + hi);
-  double r2 = 0;
-  for (Vec<D>& u : out) {
-    u -= c;
-    r2 = std::max(r2, u.squaredNorm());
-  }
-  return std::sqrt(r2);
-}
-
-namespace {
-#if S4D_X86
-// The portable loop's operations on one register a point, its squared norms summed in the same
-// order (avx4::sums4): the same bits.
-__attribute__((target("avx"))) double centred_difference_avx(const Vec<4>* a, const Vec<4>* b,
-                                                             Vec<4>* out, std::size_t n) {
-  using avx4::load;
-  const __m256d zero = _mm256_setzero_pd();
-  __m256d lo = _mm256_sub_pd(load(a[0]), load(b[0])), hi = lo, finite = zero;
-  for (std::size_t v = 0; v < n; ++v) {
-    const __m256d u = _mm256_sub_pd(load(a[v]), load(b[v]));
-    _mm256_storeu_pd(out[v].data(), u);
-    lo = _mm256_min_pd(lo, u);
-    hi = _mm256_max_pd(hi, u);
-    finite = _mm256_add_pd(finite, _mm256_mul_pd(zero, u));
-  }
-  if (_mm256_movemask_pd(_mm256_cmp_pd(finite, zero, _CMP_EQ_OQ)) != 0xF)
-    return std::numeric_limits<double>::infinity();
-  const __m256d c = _mm256_mul_pd(_mm256_set1_pd(0.5), _mm256_add_pd(lo, hi));
-  __m256d r2 = zero;
-  std::size_t v = 0;
-  for (; v + 4 <= n; v += 4) {
-    __m256d sq[4];
-    for (int j = 0; j < 4; ++j) {
-      const __m256d u = _mm256_sub_pd(load(out[v + j]), c);
-      _mm256_storeu_pd(out[v + j].data(), u);
-      sq[j] = _mm256_mul_pd(u, u);
-    }
-    r2 = _mm256_max_pd(r2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
-  }
-  for (; v < n; ++v) {
-    const __m256d u = _mm256_sub_pd(load(out[v]), c);
-    _mm256_storeu_pd(out[v].data(), u);
-    const __m256d sq = _mm256_mul_pd(u, u);
-    r2 = _mm256_max_pd(r2, avx4::sums4(sq, sq, sq, sq));
-  }
-  return std::sqrt(avx4::max_lane(r2));
-}
-#endif
-}  // namespace
-
-template <int D>
-double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
-                          std::vector<Vec<D>>& out) {
-#if S4D_X86
-  if constexpr (D == 4)
-    if (cpu::kHasAvx) {
-      out.resize(a.size());
-      if (a.empty()) return 0;
-      return centred_difference_avx(a.data(), b.data(), out.data(), a.size());
-    }
-#endif
-  return centred_difference_portable<D>(a, b, out);
-}
-
-}  // namespace prox_detail
 
 template <int D, int K>
 SelfProximity<D, K>::SelfProximity(std::vector<Cell<K>> cells)
@@ -239,47 +150,6 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
 
 // [SECTION] Motion since the build
 
-namespace {
-#if S4D_X86
-// The first pass of the ring bounds for whole groups of four edges: their squared changes in
-// registers (the portable bits, see avx4::sums4), then the scalar maxima. Returns how many edges
-// it did (the portable loop does the rest).
-__attribute__((target("avx"))) std::size_t edge_maxima_avx(const Vec<4>* u,
-                                                           const std::array<int, 2>* edges,
-                                                           std::size_t ne, double* own) {
-  using avx4::load;
-  std::size_t i = 0;
-  for (; i + 4 <= ne; i += 4) {
-    __m256d sq[4];
-    for (int j = 0; j < 4; ++j) {
-      const __m256d d = _mm256_sub_pd(load(u[edges[i + j][0]]), load(u[edges[i + j][1]]));
-      sq[j] = _mm256_mul_pd(d, d);
-    }
-    alignas(32) double d2[4];
-    _mm256_store_pd(d2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
-    constexpr int kLane[4] = {0, 2, 1, 3};
-    for (int j = 0; j < 4; ++j) {
-      const auto& e = edges[i + j];
-      const double d = d2[kLane[j]];
-      own[e[0]] = std::max(own[e[0]], d);
-      own[e[1]] = std::max(own[e[1]], d);
-    }
-  }
-  return i;
-}
-
-// 3 sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
-// bits); returns how many it did.
-__attribute__((target("avx"))) int triple_roots_avx(double* a, int n) {
-  const __m256d three = _mm256_set1_pd(3.0);
-  int v = 0;
-  for (; v + 4 <= n; v += 4)
-    _mm256_storeu_pd(a + v, _mm256_mul_pd(three, _mm256_sqrt_pd(_mm256_loadu_pd(a + v))));
-  return v;
-}
-#endif
-}  // namespace
-
 template <int D, int K>
 void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
@@ -289,19 +159,7 @@ void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   const Vec<D>* u = m.u->data();
   m.edge_max.assign(nv, 0.0);
   double* own = m.edge_max.data();  // per vertex: the largest |u_p - u_q|² of its edges
-  const auto* edges = topo_.edges.data();
-  const std::size_t ne = topo_.edges.size();
-  std::size_t done = 0;
-#if S4D_X86
-  if constexpr (D == 4)
-    if (cpu::kHasAvx) done = edge_maxima_avx(u, edges, ne, own);
-#endif
-  for (std::size_t i = done; i < ne; ++i) {
-    const auto& e = edges[i];
-    const double d = (u[e[0]] - u[e[1]]).squaredNorm();
-    own[e[0]] = std::max(own[e[0]], d);
-    own[e[1]] = std::max(own[e[1]], d);
-  }
+  raise_to_edge_changes<D>(u, topo_.edges, own);
   m.around.assign(m.edge_max.begin(), m.edge_max.end());
   double* around = m.around.data();  // the same over the vertex and its neighbours
   for (const auto& e : topo_.edges) {
@@ -309,11 +167,7 @@ void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
     around[e[0]] = std::max(around[e[0]], o1);
     around[e[1]] = std::max(around[e[1]], o0);
   }
-  int rooted = 0;  // 3 × the root, once a vertex (monotone: the same as once a cell)
-#if S4D_X86
-  if (cpu::kHasAvx) rooted = triple_roots_avx(around, nv);
-#endif
-  for (int v = rooted; v < nv; ++v) around[v] = 3 * std::sqrt(around[v]);
+  triple_roots(around, nv);  // once a vertex (monotone: the same as once a cell)
   m.ring.resize(nc);
   double* ring = m.ring.data();
   const Cell<K>* cells = cells_.data();
@@ -386,84 +240,6 @@ void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
 // [SECTION] Testing a pair, and the fringe
 
 namespace {
-#if S4D_X86
-// axis_gap's bits for two triangles in R^4 and a stored axis: its dot products in Eigen's order
-// (avx4::sums4); the extremes are exact whatever the order, and a NaN projection gives 0 as there.
-__attribute__((target("avx"))) double axis_bound_avx(const Vec<4>* x, const Cell<3>& a,
-                                                     const Cell<3>& b, const float* axis) {
-  using avx4::load;
-  const __m256d n = _mm256_cvtps_pd(_mm_loadu_ps(axis));
-  const __m256d nn = _mm256_mul_pd(n, n);
-  const double len2 = _mm256_cvtsd_f64(avx4::sums4(nn, nn, nn, nn));
-  if (!(len2 > 0)) return -std::numeric_limits<double>::infinity();
-  const double len = std::sqrt(len2);
-  const __m256d pa[3] = {_mm256_mul_pd(load(x[a[0]]), n), _mm256_mul_pd(load(x[a[1]]), n),
-                         _mm256_mul_pd(load(x[a[2]]), n)};
-  const __m256d pb[3] = {_mm256_mul_pd(load(x[b[0]]), n), _mm256_mul_pd(load(x[b[1]]), n),
-                         _mm256_mul_pd(load(x[b[2]]), n)};
-  const __m256d s1 = avx4::sums4(pa[0], pa[1], pa[2], pb[0]);  // a0, a2, a1, b0
-  const __m256d s2 = avx4::sums4(pb[1], pb[2], pb[1], pb[2]);  // b1, b1, b2, b2
-  const __m256d nan = _mm256_or_pd(_mm256_cmp_pd(s1, s1, _CMP_UNORD_Q), _mm256_cmp_pd(s2, s2, _CMP_UNORD_Q));
-  if (_mm256_movemask_pd(nan) != 0) return 0;
-  alignas(32) double d1[4], d2[4];
-  _mm256_store_pd(d1, s1);
-  _mm256_store_pd(d2, s2);
-  const double lo_a = std::min(std::min(d1[0], d1[2]), d1[1]);  // the portable order: a0, a1, a2
-  const double hi_a = std::max(std::max(d1[0], d1[2]), d1[1]);
-  const double lo_b = std::min(std::min(d1[3], d2[0]), d2[2]);
-  const double hi_b = std::max(std::max(d1[3], d2[0]), d2[2]);
-  const double gap = std::max(lo_b - hi_a, lo_a - hi_b);
-  const double scale = std::max(std::max(std::abs(lo_a), std::abs(hi_a)),
-                                std::max(std::abs(lo_b), std::abs(hi_b)));
-  return (gap - 1e-12 * scale) / len;
-}
-#endif
-}  // namespace
-
-namespace prox_detail {
-
-template <int D, int K>
-double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
-                                const std::array<float, D>& axis) {
-  Vec<D> n;
-  for (int k = 0; k < D; ++k) n[k] = axis[k];
-  if (!(n.squaredNorm() > 0)) return -std::numeric_limits<double>::infinity();
-  return axis_gap<D, K, K>(gather<D, K>(x, a), gather<D, K>(x, b), n);
-}
-
-template <int D, int K>
-double stored_axis_gap(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
-                       const std::array<float, D>& axis) {
-#if S4D_X86
-  if constexpr (D == 4 && K == 3)
-    if (cpu::kHasAvx) return axis_bound_avx(x.data(), a, b, axis.data());
-#endif
-  return stored_axis_gap_portable<D, K>(x, a, b, axis);
-}
-
-}  // namespace prox_detail
-
-template <int D, int K>
-double SelfProximity<D, K>::axis_bound(int a, int b, const std::array<float, D>& axis,
-                                       std::span<const Vec<D>> x) const {
-  return stored_axis_gap<D, K>(x, cells_[a], cells_[b], axis);
-}
-
-namespace {
-#if S4D_X86
-// The portable snapshot motion's bits (see max_pair_distance2_3x3).
-__attribute__((target("avx"))) double snapshot_motion_avx(const Vec<4>* x, const Cell<3>& a,
-                                                          const Cell<3>& b, const Vec<4>* x0) {
-  using avx4::load;
-  __m256d p[3], q[3];
-  for (int i = 0; i < 3; ++i) {
-    p[i] = _mm256_sub_pd(load(x[a[i]]), load(x0[i]));
-    q[i] = _mm256_sub_pd(load(x[b[i]]), load(x0[3 + i]));
-  }
-  return std::sqrt(max_pair_distance2_3x3(p, q));
-}
-#endif
-
 template <int D>
 void store_axis(const Vec<D>& n, std::array<float, D>& axis) {
   const double len = n.norm();
@@ -494,19 +270,7 @@ double SelfProximity<D, K>::test_pair(int a, int b, Hints& h, std::span<const Ve
 
 template <int D, int K>
 double SelfProximity<D, K>::snapshot_motion(const Fringe& f, std::span<const Vec<D>> x) const {
-#if S4D_X86
-  if constexpr (D == 4 && K == 3)
-    if (cpu::kHasAvx) return snapshot_motion_avx(x.data(), cells_[f.a], cells_[f.b], f.x0.data());
-#endif
-  std::array<Vec<D>, 2 * K> d;
-  for (int i = 0; i < K; ++i) {
-    d[i] = x[cells_[f.a][i]] - f.x0[i];
-    d[K + i] = x[cells_[f.b][i]] - f.x0[K + i];
-  }
-  double m2 = 0;
-  for (int i = 0; i < K; ++i)
-    for (int j = K; j < 2 * K; ++j) m2 = std::max(m2, (d[i] - d[j]).squaredNorm());
-  return m2 == m2 ? std::sqrt(m2) : std::numeric_limits<double>::infinity();
+  return motion_since_snapshot<D, K>(x, cells_[f.a], cells_[f.b], f.x0);
 }
 
 template <int D, int K>
@@ -701,17 +465,7 @@ Impact<D> SelfProximity<D, K>::earliest_impact(std::span<const Vec<D>> x0,
 
 #define S4D_INSTANTIATE(D)            \
   template class SelfProximity<D, 2>; \
-  template class SelfProximity<D, 3>; \
-  template double prox_detail::centred_difference<D>(std::span<const Vec<D>>, std::span<const Vec<D>>, \
-                                                     std::vector<Vec<D>>&);                        \
-  template double prox_detail::centred_difference_portable<D>(                                     \
-      std::span<const Vec<D>>, std::span<const Vec<D>>, std::vector<Vec<D>>&);                     \
-  template double prox_detail::stored_axis_gap<D, 2>(std::span<const Vec<D>>, const Cell<2>&,      \
-                                                     const Cell<2>&, const std::array<float, D>&); \
-  template double prox_detail::stored_axis_gap<D, 3>(std::span<const Vec<D>>, const Cell<3>&,      \
-                                                     const Cell<3>&, const std::array<float, D>&); \
-  template double prox_detail::stored_axis_gap_portable<D, 3>(                                     \
-      std::span<const Vec<D>>, const Cell<3>&, const Cell<3>&, const std::array<float, D>&);
+  template class SelfProximity<D, 3>;
 S4D_INSTANTIATE(2)
 S4D_INSTANTIATE(3)
 S4D_INSTANTIATE(4)

@@ -8,11 +8,11 @@
 #include <span>
 #include <vector>
 
-#include "core/avx4.hpp"
 #include "proximity/bvh.hpp"
 #include "proximity/cell_topology.hpp"
 #include "proximity/cells.hpp"
 #include "proximity/continuous_collision.hpp"
+#include "proximity/motion_kernels.hpp"
 #include "proximity/narrow_phase.hpp"
 #include "proximity/separating_axes.hpp"
 
@@ -168,8 +168,10 @@ class SelfProximity {
   bool prepare_step(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1, double thickness);
 
   // The gap along `axis` between cells a and b at x (a lower bound of their distance; -inf when
-  // the axis is zero).
-  double axis_bound(int a, int b, const std::array<float, D>& axis, std::span<const Vec<D>> x) const;
+  // the axis is zero). Inline: one call, not two, for each of the step's thousands of re-proofs.
+  double axis_bound(int a, int b, const std::array<float, D>& axis, std::span<const Vec<D>> x) const {
+    return prox_detail::stored_axis_gap<D, K>(x, cells_[a], cells_[b], axis);
+  }
   // Re-proves pair (a, b) at x: the gap along its axis unless it was touching, else the exact
   // distance (warm-started). Returns a lower bound of its distance now; `within` (with the
   // closest points) when that is <= delta.
@@ -260,69 +262,6 @@ class SelfProximity {
   long long exact_tests_ = 0;
 };
 
-namespace prox_detail {
-// out = a - b less the centre of its bounding box; returns the radius of the ball about that
-// centre that holds every out[v] (+inf if one is not finite). Picks an AVX path at run time for
-// D = 4, with the same bits as the portable one.
-template <int D>
-double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
-                          std::vector<Vec<D>>& out);
-template <int D>
-double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
-                                   std::vector<Vec<D>>& out);
-// The gap of cells a and b at x along a stored (float) axis: a lower bound of their distance,
-// -inf when the axis is zero. An AVX path for triangles in R^4 gives the portable bits.
-template <int D, int K>
-double stored_axis_gap(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
-                       const std::array<float, D>& axis);
-template <int D, int K>
-double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
-                                const std::array<float, D>& axis);
-
-#if S4D_X86
-// max |p_i - q_j|² over three points p and three q in R^4, the portable loop's bits: each squared
-// norm summed in its order (avx4::sums4), and a NaN one skipped as std::max(m2, NaN) skips it.
-S4D_AVX_INLINE double max_pair_distance2_3x3(const __m256d p[3], const __m256d q[3]) {
-  __m256d s[9];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const __m256d d = _mm256_sub_pd(p[i], q[j]);
-      s[3 * i + j] = _mm256_mul_pd(d, d);
-    }
-  __m256d m = _mm256_setzero_pd();  // max_pd(new, m) keeps m where new is NaN
-  m = _mm256_max_pd(avx4::sums4(s[0], s[1], s[2], s[3]), m);
-  m = _mm256_max_pd(avx4::sums4(s[4], s[5], s[6], s[7]), m);
-  m = _mm256_max_pd(avx4::sums4(s[8], s[8], s[8], s[8]), m);
-  return avx4::max_lane(m);
-}
-
-__attribute__((target("avx"))) inline double max_relative_avx(const Vec<4>* u, const Cell<3>& a,
-                                                              const Cell<3>& b) {
-  const __m256d p[3] = {avx4::load(u[a[0]]), avx4::load(u[a[1]]), avx4::load(u[a[2]])};
-  const __m256d q[3] = {avx4::load(u[b[0]]), avx4::load(u[b[1]]), avx4::load(u[b[2]])};
-  return std::sqrt(max_pair_distance2_3x3(p, q));
-}
-#endif
-
-// max |u_i - u_j| over vertices i of cell a and j of cell b.
-template <int D, int K>
-inline double max_relative_portable(const std::vector<Vec<D>>& u, const Cell<K>& a,
-                                    const Cell<K>& b) {
-  double m2 = 0;
-  for (int i = 0; i < K; ++i)
-    for (int j = 0; j < K; ++j) m2 = std::max(m2, (u[a[i]] - u[b[j]]).squaredNorm());
-  return std::sqrt(m2);
-}
-// The same, with an AVX path for triangles in R^4 (the same bits).
-template <int D, int K>
-inline double max_relative(const std::vector<Vec<D>>& u, const Cell<K>& a, const Cell<K>& b) {
-#if S4D_X86
-  if constexpr (D == 4 && K == 3)
-    if (cpu::kHasAvx) return max_relative_avx(u.data(), a, b);
-#endif
-  return max_relative_portable<D, K>(u, a, b);
-}
-}  // namespace prox_detail
 
 template <int D, int K>
 template <class F>

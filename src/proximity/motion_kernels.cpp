@@ -1,0 +1,262 @@
+// The motion kernels of the coherent self queries (see motion_kernels.hpp), portable and AVX.
+#include "proximity/motion_kernels.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "proximity/narrow_phase.hpp"
+#include "proximity/separating_axes.hpp"
+
+namespace s4d::prox_detail {
+
+// [SECTION] Displacement fields
+
+template <int D>
+double centred_difference_portable(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
+                                   std::vector<Vec<D>>& out) {
+  out.resize(a.size());
+  if (a.empty()) return 0;
+  Vec<D> lo = a[0] - b[0], hi = lo;
+  Vec<D> zero = Vec<D>::Zero();  // stays zero while every coordinate is finite
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    const Vec<D> u = a[v] - b[v];
+    out[v] = u;
+    lo = lo.cwiseMin(u);
+    hi = hi.cwiseMax(u);
+    zero += 0.0 * u;
+  }
+  if (!(zero.array() == 0.0).all()) return std::numeric_limits<double>::infinity();
+  const Vec<D> c = 0.5 * (lo + hi);
+  double r2 = 0;
+  for (Vec<D>& u : out) {
+    u -= c;
+    r2 = std::max(r2, u.squaredNorm());
+  }
+  return std::sqrt(r2);
+}
+
+namespace {
+#if S4D_X86
+// The portable loop's operations on one register a point, its squared norms summed in the same
+// order (avx4::sums4): the same bits.
+__attribute__((target("avx"))) double centred_difference_avx(const Vec<4>* a, const Vec<4>* b,
+                                                             Vec<4>* out, std::size_t n) {
+  using avx4::load;
+  const __m256d zero = _mm256_setzero_pd();
+  __m256d lo = _mm256_sub_pd(load(a[0]), load(b[0])), hi = lo, finite = zero;
+  for (std::size_t v = 0; v < n; ++v) {
+    const __m256d u = _mm256_sub_pd(load(a[v]), load(b[v]));
+    _mm256_storeu_pd(out[v].data(), u);
+    lo = _mm256_min_pd(lo, u);
+    hi = _mm256_max_pd(hi, u);
+    finite = _mm256_add_pd(finite, _mm256_mul_pd(zero, u));
+  }
+  if (_mm256_movemask_pd(_mm256_cmp_pd(finite, zero, _CMP_EQ_OQ)) != 0xF)
+    return std::numeric_limits<double>::infinity();
+  const __m256d c = _mm256_mul_pd(_mm256_set1_pd(0.5), _mm256_add_pd(lo, hi));
+  __m256d r2 = zero;
+  std::size_t v = 0;
+  for (; v + 4 <= n; v += 4) {
+    __m256d sq[4];
+    for (int j = 0; j < 4; ++j) {
+      const __m256d u = _mm256_sub_pd(load(out[v + j]), c);
+      _mm256_storeu_pd(out[v + j].data(), u);
+      sq[j] = _mm256_mul_pd(u, u);
+    }
+    r2 = _mm256_max_pd(r2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
+  }
+  for (; v < n; ++v) {
+    const __m256d u = _mm256_sub_pd(load(out[v]), c);
+    _mm256_storeu_pd(out[v].data(), u);
+    const __m256d sq = _mm256_mul_pd(u, u);
+    r2 = _mm256_max_pd(r2, avx4::sums4(sq, sq, sq, sq));
+  }
+  return std::sqrt(avx4::max_lane(r2));
+}
+#endif
+}  // namespace
+
+template <int D>
+double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
+                          std::vector<Vec<D>>& out) {
+#if S4D_X86
+  if constexpr (D == 4)
+    if (cpu::kHasAvx) {
+      out.resize(a.size());
+      if (a.empty()) return 0;
+      return centred_difference_avx(a.data(), b.data(), out.data(), a.size());
+    }
+#endif
+  return centred_difference_portable<D>(a, b, out);
+}
+
+
+// [SECTION] Gaps along a stored axis
+
+#if S4D_X86
+// axis_gap's bits for two triangles in R^4 and a stored axis: its dot products in Eigen's order
+// (avx4::sums4); the extremes are exact whatever the order, and a NaN projection gives 0 as there.
+__attribute__((target("avx"))) double stored_axis_gap_avx(const Vec<4>* x, const Cell<3>& a,
+                                                          const Cell<3>& b, const float* axis) {
+  using avx4::load;
+  const __m256d n = _mm256_cvtps_pd(_mm_loadu_ps(axis));
+  const __m256d nn = _mm256_mul_pd(n, n);
+  const double len2 = _mm256_cvtsd_f64(avx4::sums4(nn, nn, nn, nn));
+  if (!(len2 > 0)) return -std::numeric_limits<double>::infinity();
+  const double len = std::sqrt(len2);
+  const __m256d pa[3] = {_mm256_mul_pd(load(x[a[0]]), n), _mm256_mul_pd(load(x[a[1]]), n),
+                         _mm256_mul_pd(load(x[a[2]]), n)};
+  const __m256d pb[3] = {_mm256_mul_pd(load(x[b[0]]), n), _mm256_mul_pd(load(x[b[1]]), n),
+                         _mm256_mul_pd(load(x[b[2]]), n)};
+  const __m256d s1 = avx4::sums4(pa[0], pa[1], pa[2], pb[0]);  // a0, a2, a1, b0
+  const __m256d s2 = avx4::sums4(pb[1], pb[2], pb[1], pb[2]);  // b1, b1, b2, b2
+  const __m256d nan = _mm256_or_pd(_mm256_cmp_pd(s1, s1, _CMP_UNORD_Q), _mm256_cmp_pd(s2, s2, _CMP_UNORD_Q));
+  if (_mm256_movemask_pd(nan) != 0) return 0;
+  alignas(32) double d1[4], d2[4];
+  _mm256_store_pd(d1, s1);
+  _mm256_store_pd(d2, s2);
+  const double lo_a = std::min(std::min(d1[0], d1[2]), d1[1]);  // the portable order: a0, a1, a2
+  const double hi_a = std::max(std::max(d1[0], d1[2]), d1[1]);
+  const double lo_b = std::min(std::min(d1[3], d2[0]), d2[2]);
+  const double hi_b = std::max(std::max(d1[3], d2[0]), d2[2]);
+  const double gap = std::max(lo_b - hi_a, lo_a - hi_b);
+  const double scale = std::max(std::max(std::abs(lo_a), std::abs(hi_a)),
+                                std::max(std::abs(lo_b), std::abs(hi_b)));
+  return (gap - 1e-12 * scale) / len;
+}
+#endif
+
+template <int D, int K>
+double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                                const std::array<float, D>& axis) {
+  Vec<D> n;
+  for (int k = 0; k < D; ++k) n[k] = axis[k];
+  if (!(n.squaredNorm() > 0)) return -std::numeric_limits<double>::infinity();
+  return axis_gap<D, K, K>(gather<D, K>(x, a), gather<D, K>(x, b), n);
+}
+
+// [SECTION] Motion since a snapshot
+
+namespace {
+#if S4D_X86
+// The portable snapshot motion's bits (see max_pair_distance2_3x3).
+__attribute__((target("avx"))) double snapshot_motion_avx(const Vec<4>* x, const Cell<3>& a,
+                                                          const Cell<3>& b, const Vec<4>* x0) {
+  using avx4::load;
+  __m256d p[3], q[3];
+  for (int i = 0; i < 3; ++i) {
+    p[i] = _mm256_sub_pd(load(x[a[i]]), load(x0[i]));
+    q[i] = _mm256_sub_pd(load(x[b[i]]), load(x0[3 + i]));
+  }
+  return std::sqrt(max_pair_distance2_3x3(p, q));
+}
+#endif
+
+}  // namespace
+
+template <int D, int K>
+double motion_since_snapshot(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
+                             const std::array<Vec<D>, 2 * K>& x0) {
+#if S4D_X86
+  if constexpr (D == 4 && K == 3)
+    if (cpu::kHasAvx) return snapshot_motion_avx(x.data(), a, b, x0.data());
+#endif
+  std::array<Vec<D>, 2 * K> d;
+  for (int i = 0; i < K; ++i) {
+    d[i] = x[a[i]] - x0[i];
+    d[K + i] = x[b[i]] - x0[K + i];
+  }
+  double m2 = 0;
+  for (int i = 0; i < K; ++i)
+    for (int j = K; j < 2 * K; ++j) m2 = std::max(m2, (d[i] - d[j]).squaredNorm());
+  return m2 == m2 ? std::sqrt(m2) : std::numeric_limits<double>::infinity();
+}
+
+// [SECTION] Edge changes of the ring bounds
+
+namespace {
+#if S4D_X86
+// The first pass of the ring bounds for whole groups of four edges: their squared changes in
+// registers (the portable bits, see avx4::sums4), then the scalar maxima. Returns how many edges
+// it did (the portable loop does the rest).
+__attribute__((target("avx"))) std::size_t edge_maxima_avx(const Vec<4>* u,
+                                                           const std::array<int, 2>* edges,
+                                                           std::size_t ne, double* own) {
+  using avx4::load;
+  std::size_t i = 0;
+  for (; i + 4 <= ne; i += 4) {
+    __m256d sq[4];
+    for (int j = 0; j < 4; ++j) {
+      const __m256d d = _mm256_sub_pd(load(u[edges[i + j][0]]), load(u[edges[i + j][1]]));
+      sq[j] = _mm256_mul_pd(d, d);
+    }
+    alignas(32) double d2[4];
+    _mm256_store_pd(d2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
+    constexpr int kLane[4] = {0, 2, 1, 3};
+    for (int j = 0; j < 4; ++j) {
+      const auto& e = edges[i + j];
+      const double d = d2[kLane[j]];
+      own[e[0]] = std::max(own[e[0]], d);
+      own[e[1]] = std::max(own[e[1]], d);
+    }
+  }
+  return i;
+}
+
+// 3 sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
+// bits); returns how many it did.
+__attribute__((target("avx"))) int triple_roots_avx(double* a, int n) {
+  const __m256d three = _mm256_set1_pd(3.0);
+  int v = 0;
+  for (; v + 4 <= n; v += 4)
+    _mm256_storeu_pd(a + v, _mm256_mul_pd(three, _mm256_sqrt_pd(_mm256_loadu_pd(a + v))));
+  return v;
+}
+#endif
+
+}  // namespace
+
+template <int D>
+void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges, double* own) {
+  std::size_t done = 0;
+#if S4D_X86
+  if constexpr (D == 4)
+    if (cpu::kHasAvx) done = edge_maxima_avx(u, edges.data(), edges.size(), own);
+#endif
+  for (std::size_t i = done; i < edges.size(); ++i) {
+    const auto& e = edges[i];
+    const double d = (u[e[0]] - u[e[1]]).squaredNorm();
+    own[e[0]] = std::max(own[e[0]], d);
+    own[e[1]] = std::max(own[e[1]], d);
+  }
+}
+
+void triple_roots(double* a, int n) {
+  int done = 0;
+#if S4D_X86
+  if (cpu::kHasAvx) done = triple_roots_avx(a, n);
+#endif
+  for (int v = done; v < n; ++v) a[v] = 3 * std::sqrt(a[v]);
+}
+
+#define S4D_INSTANTIATE_CELLS(D, K)                                                                \
+  template double stored_axis_gap_portable<D, K>(std::span<const Vec<D>>, const Cell<K>&,          \
+                                                 const Cell<K>&, const std::array<float, D>&);     \
+  template double motion_since_snapshot<D, K>(std::span<const Vec<D>>, const Cell<K>&,             \
+                                              const Cell<K>&, const std::array<Vec<D>, 2 * K>&);
+#define S4D_INSTANTIATE(D)                                                                         \
+  template double centred_difference<D>(std::span<const Vec<D>>, std::span<const Vec<D>>,          \
+                                        std::vector<Vec<D>>&);                                     \
+  template double centred_difference_portable<D>(std::span<const Vec<D>>, std::span<const Vec<D>>, \
+                                                 std::vector<Vec<D>>&);                            \
+  template void raise_to_edge_changes<D>(const Vec<D>*, std::span<const std::array<int, 2>>,       \
+                                         double*);                                                 \
+  S4D_INSTANTIATE_CELLS(D, 2)                                                                      \
+  S4D_INSTANTIATE_CELLS(D, 3)
+S4D_INSTANTIATE(2)
+S4D_INSTANTIATE(3)
+S4D_INSTANTIATE(4)
+#undef S4D_INSTANTIATE
+#undef S4D_INSTANTIATE_CELLS
+
+}  // namespace s4d::prox_detail
