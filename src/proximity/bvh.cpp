@@ -2,6 +2,7 @@
 #include "proximity/bvh.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/cpu.hpp"
 
@@ -29,7 +30,48 @@ __attribute__((target("avx"))) unsigned gaps2_avx(const float* a_lo, const float
       _mm256_movemask_ps(_mm256_cmp_ps(acc, _mm256_set1_ps(r2), _CMP_LE_OQ)));
 }
 }  // namespace
+
+// FloatBox::outward's operations, four axes a register (the same bits).
+__attribute__((target("avx"))) void gather_outward_avx(std::span<const Box<4>> boxes,
+                                                       std::span<const int> order, Box<4>* prim,
+                                                       FloatBox* pf) {
+  const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+  const __m128 ulp = _mm_set1_ps(0x1p-23f), tiny = _mm_set1_ps(0x1p-126f);
+  const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+  const __m128 minus_inf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Box<4>& b = boxes[order[k]];
+    const __m256d lo = _mm256_loadu_pd(b.lo.data()), hi = _mm256_loadu_pd(b.hi.data());
+    _mm256_storeu_pd(prim[k].lo.data(), lo);
+    _mm256_storeu_pd(prim[k].hi.data(), hi);
+    const __m128 l = _mm256_cvtpd_ps(lo), h = _mm256_cvtpd_ps(hi);
+    const __m128 l_out = _mm_sub_ps(l, _mm_add_ps(_mm_mul_ps(_mm_and_ps(l, abs_mask), ulp), tiny));
+    const __m128 h_out = _mm_add_ps(h, _mm_add_ps(_mm_mul_ps(_mm_and_ps(h, abs_mask), ulp), tiny));
+    _mm_store_ps(pf[k].lo, _mm_blendv_ps(l_out, minus_inf, _mm_cmpunord_ps(l_out, l_out)));
+    _mm_store_ps(pf[k].hi, _mm_blendv_ps(h_out, inf, _mm_cmpunord_ps(h_out, h_out)));
+  }
+}
 #endif
+
+template <int D>
+void gather_outward_portable(std::span<const Box<D>> boxes, std::span<const int> order,
+                             Box<D>* prim, FloatBox* pf) {
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    prim[k] = boxes[order[k]];
+    pf[k] = FloatBox::outward<D>(prim[k]);
+  }
+}
+
+template <int D>
+void Bvh<D>::copy_prims(std::span<const Box<D>> boxes) {
+  prim_boxes_.resize(boxes.size());
+  prim_f_.resize(boxes.size());
+#if S4D_X86
+  if constexpr (D == 4)
+    if (cpu::kHasAvx) return gather_outward_avx(boxes, order_, prim_boxes_.data(), prim_f_.data());
+#endif
+  gather_outward_portable<D>(boxes, order_, prim_boxes_.data(), prim_f_.data());
+}
 
 template <int D>
 unsigned Bvh<D>::leaf_gaps2_avx(int k, int leaf, float r2, float out[kLeafSize]) const {
@@ -72,12 +114,7 @@ void Bvh<D>::build(std::span<const Box<D>> boxes) {
       n.leaf = static_cast<int>(leaves_.size());
       leaves_.push_back({n.first, n.count, static_cast<int>(&n - nodes_.data())});
     }
-  prim_boxes_.resize(boxes.size());
-  prim_f_.resize(boxes.size());
-  for (std::size_t k = 0; k < boxes.size(); ++k) {
-    prim_boxes_[k] = boxes[order_[k]];
-    prim_f_[k] = FloatBox::outward<D>(prim_boxes_[k]);
-  }
+  copy_prims(boxes);
   fit_nodes();
   built_size_ = total_half_perimeter();
 }
@@ -141,10 +178,7 @@ void Bvh<D>::refit(std::span<const Box<D>> boxes) {
     build(boxes);
     return;
   }
-  for (std::size_t k = 0; k < boxes.size(); ++k) {
-    prim_boxes_[k] = boxes[order_[k]];
-    prim_f_[k] = FloatBox::outward<D>(prim_boxes_[k]);
-  }
+  copy_prims(boxes);
   fit_nodes();
   // A tree fitted to far-moved primitives overlaps itself more and more; rebuild it then.
   const double size = total_half_perimeter();
@@ -158,6 +192,9 @@ double Bvh<D>::total_half_perimeter() const {
   return s;
 }
 
+template void gather_outward_portable<2>(std::span<const Box<2>>, std::span<const int>, Box<2>*, FloatBox*);
+template void gather_outward_portable<3>(std::span<const Box<3>>, std::span<const int>, Box<3>*, FloatBox*);
+template void gather_outward_portable<4>(std::span<const Box<4>>, std::span<const int>, Box<4>*, FloatBox*);
 template class Bvh<2>;
 template class Bvh<3>;
 template class Bvh<4>;

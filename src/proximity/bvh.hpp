@@ -124,6 +124,16 @@ inline float float_margin(double margin) {
   return m;
 }
 
+// prim[k] = boxes[order[k]] and pf[k] = FloatBox::outward(prim[k]) for k < order.size(): what a
+// refit copies. The AVX form (call it only when cpu::kHasAvx) gives the portable one's bits.
+template <int D>
+void gather_outward_portable(std::span<const Box<D>> boxes, std::span<const int> order,
+                             Box<D>* prim, FloatBox* pf);
+#if S4D_X86
+void gather_outward_avx(std::span<const Box<4>> boxes, std::span<const int> order, Box<4>* prim,
+                        FloatBox* pf);
+#endif
+
 template <int D>
 class Bvh {
  public:
@@ -202,6 +212,8 @@ class Bvh {
     int first = 0, count = 0, node = 0;
   };
   int build_node(std::span<const Box<D>> boxes, std::vector<Vec<D>>& centres, int begin, int end);
+  // prim_boxes_ and prim_f_ from boxes in slot order (an AVX path in R^4: the same boxes).
+  void copy_prims(std::span<const Box<D>> boxes);
   void fit_nodes();  // node boxes from prim_boxes_, bottom-up
   double total_half_perimeter() const;
   // The exact (double) test behind every reported pair, after the float one passed.

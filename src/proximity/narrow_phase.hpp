@@ -1,6 +1,6 @@
-// What the whole-mesh queries share below the broad phase: gathering a cell's vertices, cell boxes
-// (static and swept), and the narrow phase of one candidate pair (cheap separating-axis rejection,
-// then the exact kernels of closest_points.hpp / continuous_collision.hpp).
+// What the whole-mesh queries share below the broad phase: gathering a cell's vertices (their boxes
+// are in cell_boxes.hpp) and the narrow phase of one candidate pair (cheap separating-axis
+// rejection, then the exact kernels of closest_points.hpp / continuous_collision.hpp).
 #pragma once
 #include <algorithm>
 #include <array>
@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "proximity/bvh.hpp"
+#include "proximity/cell_boxes.hpp"
 #include "proximity/cells.hpp"
 #include "proximity/continuous_collision.hpp"
 #include "proximity/separating_axes.hpp"
@@ -41,45 +42,6 @@ Simplex<D, K> gather(std::span<const Vec<D>> x, const Cell<K>& c) {
   Simplex<D, K> s;
   for (int i = 0; i < K; ++i) s[i] = x[c[i]];
   return s;
-}
-
-// A cell with a non-finite vertex gets the whole space as its box: it stays a candidate with
-// every other cell, and the exact kernels (NaN distance, contact at once) decide what it means.
-// One finiteness test a box (the sum of every coordinate: NaN or infinite if one is, or if
-// huge coordinates overflow, which only makes the box larger).
-template <int D, int K, int T>
-Box<D> cell_box(const std::array<std::span<const Vec<D>>, T>& x, const Cell<K>& c) {
-  Box<D> b;
-  b.lo = b.hi = x[0][c[0]];
-  double sum = 0;
-  for (int t = 0; t < T; ++t)
-    for (int i = 0; i < K; ++i) {
-      const Vec<D>& p = x[t][c[i]];
-      b.lo = b.lo.cwiseMin(p);
-      b.hi = b.hi.cwiseMax(p);
-      sum += p.sum();
-    }
-  if (!std::isfinite(sum)) {
-    b.lo.setConstant(-std::numeric_limits<double>::infinity());
-    b.hi.setConstant(std::numeric_limits<double>::infinity());
-  }
-  return b;
-}
-
-template <int D, int K>
-void static_boxes(std::span<const Vec<D>> x, const std::vector<Cell<K>>& cells,
-                  std::vector<Box<D>>& boxes) {
-  boxes.resize(cells.size());
-  const std::array<std::span<const Vec<D>>, 1> at{x};
-  for (std::size_t i = 0, n = cells.size(); i < n; ++i) boxes[i] = cell_box<D, K, 1>(at, cells[i]);
-}
-
-template <int D, int K>
-void swept_boxes(std::span<const Vec<D>> x0, std::span<const Vec<D>> x1,
-                 const std::vector<Cell<K>>& cells, std::vector<Box<D>>& boxes) {
-  boxes.resize(cells.size());
-  const std::array<std::span<const Vec<D>>, 2> at{x0, x1};
-  for (std::size_t i = 0, n = cells.size(); i < n; ++i) boxes[i] = cell_box<D, K, 2>(at, cells[i]);
 }
 
 // Euclidean gap of two boxes, a lower bound of the distance of anything inside them (0 for a
