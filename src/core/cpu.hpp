@@ -4,6 +4,10 @@
 
 #if defined(__x86_64__) || defined(__i386__)
 #define S4D_X86 1
+// A function compiled for AVX (call it only when kHasAvx): the AVX helpers inline into it.
+#define S4D_AVX_TARGET __attribute__((target("avx")))
+#else
+#define S4D_AVX_TARGET
 #endif
 
 namespace s4d::cpu {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/avx4.hpp"
 #include "core/cpu.hpp"
 
 namespace s4d {
@@ -11,13 +12,13 @@ namespace s4d {
 #if S4D_X86
 namespace {
 // Eight lanes at once; per lane the operations of the SSE path, in its order (no FMA in "avx").
-// `lo`/`hi`: the leaf's lanes, eight floats an axis.
-__attribute__((target("avx"))) unsigned gaps2_avx(const float* a_lo, const float* a_hi,
-                                                  const float (*lo)[8], const float (*hi)[8],
-                                                  int dims, float r2, float* out) {
+// `lo`/`hi`: the leaf's lanes, eight floats an axis. Inlined into its two callers (both AVX).
+template <int D>
+S4D_AVX_INLINE unsigned gaps2_avx(const float* a_lo, const float* a_hi, const float (*lo)[8],
+                                  const float (*hi)[8], float r2, float* out) {
   const __m256 zero = _mm256_setzero_ps();
   __m256 acc = zero;
-  for (int axis = 0; axis < dims; ++axis) {
+  for (int axis = 0; axis < D; ++axis) {
     const __m256 g = _mm256_max_ps(
         _mm256_max_ps(_mm256_sub_ps(_mm256_loadu_ps(lo[axis]), _mm256_set1_ps(a_hi[axis])),
                       _mm256_sub_ps(_mm256_set1_ps(a_lo[axis]), _mm256_loadu_ps(hi[axis]))),
@@ -78,9 +79,22 @@ unsigned Bvh<D>::leaf_gaps2_avx(int k, int leaf, float r2, float out[kLeafSize])
   static_assert(kLeafSize == 8, "one AVX register holds a leaf");
 #if S4D_X86
   const LeafLanes& l = lanes_[leaf];
-  return gaps2_avx(prim_f_[k].lo, prim_f_[k].hi, l.lo, l.hi, D, r2, out);
+  return gaps2_avx<D>(prim_f_[k].lo, prim_f_[k].hi, l.lo, l.hi, r2, out);
 #else
   (void)k, (void)leaf, (void)r2, (void)out;
+  return 0;  // never called: cpu::kHasAvx is false
+#endif
+}
+
+template <int D>
+unsigned Bvh<D>::leaf_rows_near_avx(int la, int lb, float r2) const {
+#if S4D_X86
+  const FloatBox& box = nodes_[leaves_[lb].node].box;
+  const LeafLanes& l = lanes_[la];
+  float out[kLeafSize];
+  return gaps2_avx<D>(box.lo, box.hi, l.lo, l.hi, r2, out);
+#else
+  (void)la, (void)lb, (void)r2;
   return 0;  // never called: cpu::kHasAvx is false
 #endif
 }

@@ -183,12 +183,18 @@ class Bvh {
   // at a time in SSE (or scalar code), and all eight in one AVX register (bvh.cpp; call it only
   // when cpu::kHasAvx), which leaf_gaps2 takes when the CPU has AVX.
   unsigned leaf_gaps2_portable(int k, int l, float r2, float out[kLeafSize]) const;
-  unsigned leaf_gaps2_avx(int k, int l, float r2, float out[kLeafSize]) const;
+  S4D_AVX_TARGET unsigned leaf_gaps2_avx(int k, int l, float r2, float out[kLeafSize]) const;
+  S4D_AVX_TARGET unsigned leaf_rows_near_avx(int la, int lb, float r2) const;
   // Whether the box of the primitive in slot k may be within sqrt(r2) of leaf l's box (the same
   // rounding as leaf_gaps2): one test that spares leaf_gaps2 for a primitive far from the leaf.
   bool prim_near_leaf(int k, int l, float r2) const {
     return prim_f_[k].gap2(nodes_[leaves_[l].node].box) <= r2;
   }
+  // Bit i set when the box of slot leaf_first(la) + i may be within sqrt(r2) of leaf lb's box,
+  // for every i < leaf_size(la) at once. With AVX its gaps are leaf_gaps2's operations on the
+  // leaf's box, each at most that of any of lb's primitives (the leaf box holds them and every
+  // operation is monotone): a row it drops has no pair leaf_gaps2 would keep.
+  unsigned leaf_rows_near(int la, int lb, float r2) const;
   int leaf_count() const { return static_cast<int>(leaves_.size()); }
   int leaf_first(int l) const { return leaves_[l].first; }
   int leaf_size(int l) const { return leaves_[l].count; }
@@ -239,6 +245,18 @@ class Bvh {
   double built_size_ = 0;    // total_half_perimeter() right after build()
   long long builds_ = 0;
 };
+
+template <int D>
+inline unsigned Bvh<D>::leaf_rows_near(int la, int lb, float r2) const {
+  const unsigned lanes = (1u << leaves_[la].count) - 1;
+#if S4D_X86
+  if (cpu::kHasAvx) return leaf_rows_near_avx(la, lb, r2) & lanes;
+#endif
+  unsigned rows = 0;
+  for (int i = 0; i < leaves_[la].count; ++i)
+    if (prim_near_leaf(leaves_[la].first + i, lb, r2)) rows |= 1u << i;
+  return rows;
+}
 
 template <int D>
 inline unsigned Bvh<D>::leaf_gaps2(int k, int leaf, float r2, float out[kLeafSize]) const {

@@ -281,10 +281,12 @@ void SelfProximity<D, K>::candidate_pairs(double margin, F&& f) const {
     const int fa = bvh_.leaf_first(la), ca = bvh_.leaf_size(la);
     const int fb = bvh_.leaf_first(lb), cb = bvh_.leaf_size(lb);
     const unsigned lanes = (1u << cb) - 1;
+    // The rows near lb's box at all, tested together (all of them within one leaf).
+    const unsigned near_rows = la == lb ? ~0u : bvh_.leaf_rows_near(la, lb, r2);
     for (int i = 0; i < ca; ++i) {
       unsigned row = static_cast<unsigned>(allowed >> (i * kLeafBits)) & lanes;
       if (la == lb) row &= ~((2u << i) - 1);  // within one leaf: j > i only
-      if (row == 0 || !bvh_.prim_near_leaf(fa + i, lb, r2)) continue;
+      if (row == 0 || !(near_rows >> i & 1u)) continue;
       float g2[Bvh<D>::kLeafSize];
       row &= bvh_.leaf_gaps2(fa + i, lb, r2, g2);
       const int p = bvh_.id(fa + i);
