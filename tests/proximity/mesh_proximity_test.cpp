@@ -394,6 +394,49 @@ TEST(MeshProximity, FloatLeafGapsAreLowerBounds) {
   }
 }
 
+// The rows a list build tests against a leaf: a row left out has no pair the leaf gaps keep, at
+// every radius and in 2, 3 and 4 dimensions, NaN boxes included; and far rows are left out.
+template <int D>
+void expect_leaf_rows_keep_every_near_pair(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Box<D>> boxes(45);
+  for (auto& b : boxes) {
+    Vec<D> c, e;
+    for (int k = 0; k < D; ++k) c[k] = u(rng), e[k] = 0.1 * std::abs(u(rng));
+    b.add(c);
+    b.add(c + e);
+  }
+  boxes[7].hi[D - 1] = std::numeric_limits<double>::quiet_NaN();
+  Bvh<D> bvh;
+  bvh.build(boxes);
+  int dropped = 0;
+  for (const float r2 : {0.0f, 0.01f, 0.3f, std::numeric_limits<float>::infinity()})
+    for (int la = 0; la < bvh.leaf_count(); ++la)
+      for (int lb = 0; lb < bvh.leaf_count(); ++lb) {
+        const unsigned rows = bvh.leaf_rows_near(la, lb, r2);
+        EXPECT_EQ(rows >> bvh.leaf_size(la), 0u);
+        for (int i = 0; i < bvh.leaf_size(la); ++i) {
+          float g2[Bvh<D>::kLeafSize];
+          const unsigned lanes = (1u << bvh.leaf_size(lb)) - 1;
+          const unsigned kept = bvh.leaf_gaps2(bvh.leaf_first(la) + i, lb, r2, g2) & lanes;
+          if (kept != 0) {
+            EXPECT_TRUE(rows >> i & 1u) << "row " << i << " of leaf " << la;
+          }
+          dropped += !(rows >> i & 1u);
+        }
+      }
+  EXPECT_GT(dropped, 0);  // the test sees rows far from a leaf
+}
+
+TEST(MeshProximity, LeafRowsNearKeepEveryRowWithANearPair) {
+  std::mt19937 rng(31);
+  for (int round = 0; round < 4; ++round) {
+    expect_leaf_rows_keep_every_near_pair<2>(rng);
+    expect_leaf_rows_keep_every_near_pair<3>(rng);
+    expect_leaf_rows_keep_every_near_pair<4>(rng);
+  }
+}
+
 // The AVX way of the leaf gaps gives the portable way's gaps and mask bit for bit, at every
 // radius, in 2, 3 and 4 dimensions (unused axes must add nothing), NaN boxes included.
 template <int D>
