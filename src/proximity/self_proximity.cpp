@@ -52,7 +52,7 @@ void SelfProximity<D, K>::set_temporal_coherence(bool on) {
 template <int D, int K>
 void SelfProximity<D, K>::set_skin(double skin) {
   skin_ = std::clamp(skin, 0.0, 8.0);  // NaN stays NaN: clamp it too
-  if (!(skin_ >= 0)) skin_ = 1.0;
+  if (!(skin_ >= 0)) skin_ = kDefaultSkin;
   radius_ = -1;
 }
 
