@@ -1,6 +1,6 @@
 // Helpers for AVX kernels on R^4 points (one point = one 256-bit register), shared by the kernels
 // that pick an AVX path at run time (see cpu.hpp). Include only where S4D_X86 holds, and call
-// only from functions compiled with target("avx"). No FMA: products round as in SSE2.
+// only from functions marked S4D_AVX_TARGET (or S4D_AVX_INLINE). No FMA: products round as in SSE2.
 #pragma once
 #include "core/cpu.hpp"
 
@@ -9,7 +9,7 @@
 
 #include "core/vec.hpp"
 
-#define S4D_AVX_INLINE __attribute__((target("avx"), always_inline)) inline
+#define S4D_AVX_INLINE S4D_AVX_TARGET __attribute__((always_inline)) inline
 
 namespace s4d::avx4 {
 

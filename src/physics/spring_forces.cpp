@@ -38,18 +38,16 @@ void spring_forces(std::span<const Spring> springs, double beta, double kd,
 #if S4D_X86
 using avx4::load;
 
-__attribute__((target("avx"), always_inline)) inline void add_force(Vec<4>& fa, Vec<4>& fb,
-                                                                    __m256d f) {
+S4D_AVX_INLINE void add_force(Vec<4>& fa, Vec<4>& fb, __m256d f) {
   _mm256_storeu_pd(fa.data(), _mm256_add_pd(load(fa), f));
   _mm256_storeu_pd(fb.data(), _mm256_sub_pd(load(fb), f));
 }
 
 // No fused multiply-add (FMA is not part of "avx"): every product is rounded as in the portable
 // kernel.
-__attribute__((target("avx"))) void linear_springs_avx_kernel(std::span<const Spring> springs,
-                                                              double kd, std::span<const Vec<4>> x,
-                                                              std::span<const Vec<4>> v,
-                                                              std::span<Vec<4>> force) {
+S4D_AVX_TARGET void linear_springs_avx_kernel(std::span<const Spring> springs, double kd,
+                                              std::span<const Vec<4>> x, std::span<const Vec<4>> v,
+                                              std::span<Vec<4>> force) {
   const std::size_t n = springs.size();
   const __m256d tiny = _mm256_set1_pd(1e-24), one = _mm256_set1_pd(1.0), kdv = _mm256_set1_pd(kd);
   std::size_t i = 0;

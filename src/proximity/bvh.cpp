@@ -33,9 +33,8 @@ S4D_AVX_INLINE unsigned gaps2_avx(const float* a_lo, const float* a_hi, const fl
 }  // namespace
 
 // FloatBox::outward's operations, four axes a register (the same bits).
-__attribute__((target("avx"))) void gather_outward_avx(std::span<const Box<4>> boxes,
-                                                       std::span<const int> order, Box<4>* prim,
-                                                       FloatBox* pf) {
+S4D_AVX_TARGET void gather_outward_avx(std::span<const Box<4>> boxes, std::span<const int> order,
+                                       Box<4>* prim, FloatBox* pf) {
   const __m128 abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
   const __m128 ulp = _mm_set1_ps(0x1p-23f), tiny = _mm_set1_ps(0x1p-126f);
   const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());

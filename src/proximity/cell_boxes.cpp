@@ -10,8 +10,8 @@ namespace {
 // The portable loop's operations, one register a point: min and max are exact, and the
 // finiteness sum is NaN exactly when the portable one is.
 template <int T>
-__attribute__((target("avx"))) void boxes_avx(const std::array<const Vec<4>*, T>& x,
-                                              const Cell<3>* cells, std::size_t n, Box<4>* out) {
+S4D_AVX_TARGET void boxes_avx(const std::array<const Vec<4>*, T>& x, const Cell<3>* cells, std::size_t n,
+                              Box<4>* out) {
   const __m256d zero = _mm256_setzero_pd();
   const __m256d inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
   const __m256d minus_inf = _mm256_set1_pd(-std::numeric_limits<double>::infinity());

@@ -39,8 +39,7 @@ namespace {
 #if S4D_X86
 // The portable loop's operations on one register a point, its squared norms summed in the same
 // order (avx4::sums4): the same bits.
-__attribute__((target("avx"))) double centred_difference_avx(const Vec<4>* a, const Vec<4>* b,
-                                                             Vec<4>* out, std::size_t n) {
+S4D_AVX_TARGET double centred_difference_avx(const Vec<4>* a, const Vec<4>* b, Vec<4>* out, std::size_t n) {
   using avx4::load;
   const __m256d zero = _mm256_setzero_pd();
   __m256d lo = _mm256_sub_pd(load(a[0]), load(b[0])), hi = lo, finite = zero;
@@ -96,8 +95,8 @@ double centred_difference(std::span<const Vec<D>> a, std::span<const Vec<D>> b,
 #if S4D_X86
 // axis_gap's bits for two triangles in R^4 and a stored axis: its dot products in Eigen's order
 // (avx4::sums4); the extremes are exact whatever the order, and a NaN projection gives 0 as there.
-__attribute__((target("avx"))) double stored_axis_gap_avx(const Vec<4>* x, const Cell<3>& a,
-                                                          const Cell<3>& b, const float* axis) {
+S4D_AVX_TARGET double stored_axis_gap_avx(const Vec<4>* x, const Cell<3>& a, const Cell<3>& b,
+                                          const float* axis) {
   using avx4::load;
   const __m256d n = _mm256_cvtps_pd(_mm_loadu_ps(axis));
   const __m256d nn = _mm256_mul_pd(n, n);
@@ -140,8 +139,8 @@ double stored_axis_gap_portable(std::span<const Vec<D>> x, const Cell<K>& a, con
 namespace {
 #if S4D_X86
 // The portable snapshot motion's bits (see max_pair_distance2_3x3).
-__attribute__((target("avx"))) double snapshot_motion_avx(const Vec<4>* x, const Cell<3>& a,
-                                                          const Cell<3>& b, const Vec<4>* x0) {
+S4D_AVX_TARGET double snapshot_motion_avx(const Vec<4>* x, const Cell<3>& a, const Cell<3>& b,
+                                          const Vec<4>* x0) {
   using avx4::load;
   __m256d p[3], q[3];
   for (int i = 0; i < 3; ++i) {
@@ -179,9 +178,8 @@ namespace {
 // The first pass of the ring bounds for whole groups of four edges: their squared changes in
 // registers (the portable bits, see avx4::sums4), then the scalar maxima. Returns how many edges
 // it did (the portable loop does the rest).
-__attribute__((target("avx"))) std::size_t edge_maxima_avx(const Vec<4>* u,
-                                                           const std::array<int, 2>* edges,
-                                                           std::size_t ne, double* own) {
+S4D_AVX_TARGET std::size_t edge_maxima_avx(const Vec<4>* u, const std::array<int, 2>* edges, std::size_t ne,
+                                           double* own) {
   using avx4::load;
   std::size_t i = 0;
   for (; i + 4 <= ne; i += 4) {
@@ -205,7 +203,7 @@ __attribute__((target("avx"))) std::size_t edge_maxima_avx(const Vec<4>* u,
 
 // 3 sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
 // bits); returns how many it did.
-__attribute__((target("avx"))) int triple_roots_avx(double* a, int n) {
+S4D_AVX_TARGET int triple_roots_avx(double* a, int n) {
   const __m256d three = _mm256_set1_pd(3.0);
   int v = 0;
   for (; v + 4 <= n; v += 4)

@@ -63,8 +63,7 @@ S4D_AVX_INLINE double max_pair_distance2_3x3(const __m256d p[3], const __m256d q
   return avx4::max_lane(m);
 }
 
-__attribute__((target("avx"))) inline double max_relative_avx(const Vec<4>* u, const Cell<3>& a,
-                                                              const Cell<3>& b) {
+S4D_AVX_TARGET inline double max_relative_avx(const Vec<4>* u, const Cell<3>& a, const Cell<3>& b) {
   const __m256d p[3] = {avx4::load(u[a[0]]), avx4::load(u[a[1]]), avx4::load(u[a[2]])};
   const __m256d q[3] = {avx4::load(u[b[0]]), avx4::load(u[b[1]]), avx4::load(u[b[2]])};
   return std::sqrt(max_pair_distance2_3x3(p, q));
