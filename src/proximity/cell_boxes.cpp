@@ -39,7 +39,6 @@ template <int T>
 void cell_boxes_avx(const std::array<std::span<const Vec<4>>, T>& x,
                     const std::vector<Cell<3>>& cells, std::vector<Box<4>>& boxes) {
   boxes.resize(cells.size());
-  if (cells.empty()) return;
   std::array<const Vec<4>*, T> at;
   for (int t = 0; t < T; ++t) at[t] = x[t].data();
   boxes_avx<T>(at, cells.data(), cells.size(), boxes.data());
