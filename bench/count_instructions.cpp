@@ -1,0 +1,147 @@
+// Counts the instructions of the three figures issues 4 and 5 track, under callgrind: one physics
+// step of the crumpled 4D cloth, one stepping "pairs within δ" query and one stepping earliest-
+// impact query on the crumpled grid. Wall-clock runs on this VM swing by ±25 %; instruction counts
+// repeat exactly, so they are what a change is judged by (scripts/count-instructions.sh runs it).
+//
+// Usage: count_instructions physics|pairs|impact [--n 64] [--warmup W] [--steps S]
+// Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
+// their mean wall time as well.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else
+#define CALLGRIND_TOGGLE_COLLECT
+#define RUNNING_ON_VALGRIND 0
+#endif
+
+#include "cloth_scene.hpp"
+#include "proximity_grid.hpp"
+
+namespace s4d::bench {
+namespace {
+
+// The same motion per step as proximity_bench's stepping runs.
+constexpr double kPhasePerStep = 0.002;
+
+struct Options {
+  std::string what;
+  int n = 64;
+  int warmup = -1;  // -1: the figure's own default
+  int steps = 100;
+};
+
+double smallest_gap(SelfProximity<4, 3>& probe, int n, std::span<const Vec4> x) {
+  std::vector<ProximityPair<4>> near;
+  probe.pairs_within(x, 2 * grid_delta(n), near);
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& p : near) d = std::min(d, p.closest.distance);
+  return d;
+}
+
+// Runs `step(k)` for the warm-up, then for the measured steps with collection on; returns the
+// mean wall time of a measured step, in ms.
+template <class F>
+double measure(const Options& o, int default_warmup, F&& step) {
+  const int warmup = o.warmup >= 0 ? o.warmup : default_warmup;
+  for (int k = 0; k < warmup; ++k) step(k, false);
+  double seconds = 0;
+  for (int k = warmup; k < warmup + o.steps; ++k) seconds += step(k, true);
+  return 1e3 * seconds / o.steps;
+}
+
+using Clock = std::chrono::steady_clock;
+
+// Times f with collection on: callgrind counts only what runs between the toggles.
+template <class F>
+double collected(F&& f) {
+  CALLGRIND_TOGGLE_COLLECT;
+  const auto t0 = Clock::now();
+  f();
+  const auto t1 = Clock::now();
+  CALLGRIND_TOGGLE_COLLECT;
+  return std::chrono::duration<double>(t1 - t0).count();
+}
+
+// physics_bench's crumpled cloth: steps 611–710 at the defaults.
+double physics(const Options& o) {
+  std::unique_ptr<World<4>> w = crumpled_cloth<4>(o.n, 0);
+  return measure(o, 610, [&](int, bool timed) {
+    drive_corners(*w, o.n, w->data().time);
+    if (!timed) {
+      w->step();
+      return 0.0;
+    }
+    return collected([&] { w->step(); });
+  });
+}
+
+double pairs(const Options& o) {
+  SelfProximity<4, 3> q(grid_triangles(o.n));
+  std::vector<ProximityPair<4>> out;
+  double phase = 0;
+  return measure(o, 20, [&](int, bool timed) {
+    const auto x = crumpled_grid<4>(o.n, phase);
+    phase += kPhasePerStep;
+    if (!timed) {
+      q.pairs_within(x, grid_delta(o.n), out);
+      return 0.0;
+    }
+    return collected([&] { q.pairs_within(x, grid_delta(o.n), out); });
+  });
+}
+
+double impact(const Options& o) {
+  SelfProximity<4, 3> q(grid_triangles(o.n));
+  SelfProximity<4, 3> probe(grid_triangles(o.n));  // the thickness, outside the count
+  double phase = 0;
+  return measure(o, 20, [&](int, bool timed) {
+    const auto x0 = crumpled_grid<4>(o.n, phase);
+    const auto x1 = crumpled_grid<4>(o.n, phase + kPhasePerStep);
+    phase += kPhasePerStep;
+    CcdOptions opt;
+    opt.thickness = 0.995 * smallest_gap(probe, o.n, x0);
+    if (!timed) {
+      q.earliest_impact(x0, x1, opt);
+      return 0.0;
+    }
+    return collected([&] { q.earliest_impact(x0, x1, opt); });
+  });
+}
+
+int usage() {
+  std::fprintf(stderr,
+               "usage: count_instructions physics|pairs|impact [--n N] [--warmup W] [--steps S]\n");
+  return 2;
+}
+
+}  // namespace
+}  // namespace s4d::bench
+
+int main(int argc, char** argv) {
+  using namespace s4d::bench;
+  if (argc < 2) return usage();
+  Options o;
+  o.what = argv[1];
+  for (int i = 2; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    const int value = std::atoi(argv[i + 1]);
+    if (flag == "--n" && value >= 8) o.n = value;
+    else if (flag == "--warmup" && value >= 0) o.warmup = value;
+    else if (flag == "--steps" && value >= 1) o.steps = value;
+    else return usage();
+  }
+  if ((argc - 2) % 2 != 0) return usage();
+  double ms = 0;
+  if (o.what == "physics") ms = physics(o);
+  else if (o.what == "pairs") ms = pairs(o);
+  else if (o.what == "impact") ms = impact(o);
+  else return usage();
+  std::printf("%s n=%d steps=%d: %.3f ms a step (wall clock, %s)\n", o.what.c_str(), o.n, o.steps,
+              ms, RUNNING_ON_VALGRIND ? "under valgrind" : "native");
+  return 0;
+}
