@@ -17,7 +17,7 @@ for ((i = 0; i < ${#args[@]}; i++)); do [[ ${args[i]} == --steps ]] && steps=${a
 for w in "${what[@]}"; do
   out=$(mktemp)
   valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file="$out.cg" \
-    "$bin" "$w" "$@" 2>"$out.log" >/dev/null
+    "$bin" "$w" "$@" 2>"$out.log" | grep -v 'wall clock' || true
   total=$(grep -o 'Collected : [0-9]*' "$out.log" | grep -o '[0-9]*$')
   awk -v w="$w" -v t="$total" -v s="$steps" \
     'BEGIN { printf "%-8s %.3f M instructions a step (%d steps)\n", w, t / s / 1e6, s }'

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/error.hpp"
+#include "physics/vertex_pass.hpp"
 #include "proximity/mesh_proximity.hpp"
 
 namespace s4d {
@@ -25,15 +26,7 @@ World<D>::World(Model<D> model) : model_(std::move(model)), collision_(model_) {
 }
 
 template <int D>
-void World<D>::accumulate_forces() {
-  const Model<D>& m = model_;
-  for (int i = 0; i < m.nv; ++i)
-    data_.force[i] = m.mass[i] * m.params.gravity + data_.f_ext[i] - m.params.damping * data_.v[i];
-  add_spring_forces<D>(m, data_.x, data_.v, data_.force);
-}
-
-template <int D>
-bool World<D>::integrate(double dt) {
+int World<D>::integrate(double dt) {
   const Model<D>& m = model_;
   int n = m.substeps(dt);
   if (m.params.beta > 0 && m.params.integrator == Integrator::kSymplecticEuler) {
@@ -48,45 +41,27 @@ bool World<D>::integrate(double dt) {
   }
   data_.last_substeps = n;
   const double h = dt / n;
-  const double max_speed = m.params.max_speed;
+  const VertexArrays<D> arrays{data_.x,      data_.v,      data_.force, data_.x0,
+                               data_.target, data_.f_ext,  data_.pinned, m.mass,
+                               m.inv_mass};
+  VertexPassParams<D> pass;
+  pass.h = h;
+  pass.dt = dt;
+  // The paper clamps the motion of a frame to δ unless told otherwise.
+  pass.limit = m.params.max_step_motion > 0 ? m.params.max_step_motion : m.params.thickness;
+  pass.gravity = m.params.gravity;
+  pass.damping = m.params.damping;
+  VertexPassResult<D> result;
+  start_forces<D>(arrays, pass.gravity, pass.damping);
   for (int s = 0; s < n; ++s) {
-    accumulate_forces();
-    const double along = static_cast<double>(s + 1) / n;
-    for (int i = 0; i < m.nv; ++i) {
-      if (data_.pinned[i]) {
-        data_.x[i] = data_.x0[i] + along * (data_.target[i] - data_.x0[i]);
-        data_.v[i] = (data_.target[i] - data_.x0[i]) / dt;
-        continue;
-      }
-      // Paper Eq. 4: a = F/m, v += h a, x += h v (the new velocity moves the position).
-      data_.v[i] += (h * m.inv_mass[i]) * data_.force[i];
-      data_.x[i] += h * data_.v[i];
-    }
+    add_spring_forces<D>(m, data_.x, data_.v, data_.force);
+    pass.along = static_cast<double>(s + 1) / n;
+    pass.last = s + 1 == n;
+    vertex_pass<D>(arrays, pass, result);
   }
-  // Pinned vertices follow their targets at any speed; a NaN squared norm is dropped by std::max,
-  // but not by all_finite.
-  double fastest2 = 0;
-  for (int i = 0; i < m.nv; ++i)
-    fastest2 = std::max(fastest2, data_.pinned[i] ? 0.0 : data_.v[i].squaredNorm());
-  return all_finite<D>(data_.x) && all_finite<D>(data_.v) && std::sqrt(fastest2) <= max_speed;
-}
-
-template <int D>
-void World<D>::clamp_motion(double dt) {
-  // The paper clamps any motion between two frames to δ, which keeps contacts from being skipped
-  // between proximity queries; the fail-safe would catch them, at the price of a freeze.
-  const double limit =
-      model_.params.max_step_motion > 0 ? model_.params.max_step_motion : model_.params.thickness;
-  for (int i = 0; i < model_.nv; ++i) {
-    const Vec<D> d = data_.x[i] - data_.x0[i];
-    if (!(d.squaredNorm() > limit * limit)) continue;  // the common case, without a square root
-    const double len = d.norm();
-    if (len > limit) {
-      data_.x[i] = data_.x0[i] + d * (limit / len);
-      if (!data_.pinned[i]) data_.v[i] *= limit / len;
-      ++data_.warnings.speed_clamps;
-    }
-  }
+  const bool ok = (result.nonfinite.array() == 0.0).all() &&
+                  std::sqrt(result.fastest2) <= m.params.max_speed;
+  return ok ? result.clamps : -1;
 }
 
 template <int D>
@@ -94,9 +69,10 @@ void World<D>::step(double dt) {
   if (!(dt > 0) || !std::isfinite(dt)) dt = model_.params.time_step;
   std::copy(data_.x.begin(), data_.x.end(), data_.x0.begin());
   std::copy(data_.v.begin(), data_.v.end(), data_.v0.begin());
-  bool ok = integrate(dt);
+  const int clamps = integrate(dt);
+  bool ok = clamps >= 0;
   if (ok) {
-    clamp_motion(dt);
+    data_.warnings.speed_clamps += clamps;
     const CollisionStats cs = collision_.solve(model_, data_.x0, data_.x, data_.v, data_.pinned, dt);
     data_.last_contacts = cs.contacts;
     data_.warnings.ccd_freezes += cs.frozen;

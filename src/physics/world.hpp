@@ -79,10 +79,10 @@ class World {
   double min_separation(double search) const;
 
  private:
-  bool integrate(double dt);  // false when the result is non-finite or too fast
-  void accumulate_forces();
-  void apply_pins(double dt);
-  void clamp_motion(double dt);
+  // Substeps of forces and integration, then the paper's clamp of each vertex's motion to
+  // max_step_motion (δ by default). Returns the motions clamped, or -1 when the result is
+  // non-finite or too fast.
+  int integrate(double dt);
 
   Model<D> model_;
   Data<D> data_;
