@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "physics/spring_forces.hpp"
 #include "core/error.hpp"
 #include "proximity/bvh.hpp"
 #include "proximity/closest_points.hpp"
@@ -201,6 +202,7 @@ Model<D> ModelBuilder<D>::build() const {
     m.body_first_vertex.push_back(m.nv);
     m.body_first_triangle.push_back(static_cast<int>(m.triangles.size()));
   }
+  if constexpr (D == 4) m.spring_groups = pack_spring_groups(m.springs);
   // CSR adjacency over mesh edges.
   std::vector<std::vector<int>> adj(m.nv);
   for (const Triangle& t : m.triangles)

@@ -29,6 +29,15 @@ struct Spring {
   SpringKind kind = SpringKind::kStructural;
 };
 
+// Four linear springs as the R^4 AVX kernel reads them (see spring_forces.hpp): the ends as byte
+// offsets into an array of Vec<4> (one address computation fewer per load), stiffness and rest
+// length in the lanes of the kernel's sums (springs 0, 2, 1, 3), loaded in one instruction each.
+struct alignas(32) SpringGroup4 {
+  double k[4];            // N/m, lane order 0, 2, 1, 3
+  double rest[4];         // m, lane order 0, 2, 1, 3
+  std::int64_t a[4], b[4];  // bytes, spring order
+};
+
 template <int D>
 struct PhysicsParams {
   double time_step = 1e-3;            // s, the haptic tick
@@ -59,6 +68,7 @@ struct Model {
   std::vector<double> inv_mass;            // nv, 1/kg
   std::vector<Vec<D>> initial;             // nv × D, positions at build time
   std::vector<Spring> springs;             // ns
+  std::vector<SpringGroup4> spring_groups; // ns / 4 (D = 4): springs[4g .. 4g+3] packed for AVX
   std::vector<Triangle> triangles;         // nt × 3, global vertex indices (collision cells)
   std::vector<int> body_first_vertex;      // nb + 1, vertices of body b are [first[b], first[b+1])
   std::vector<int> body_first_triangle;    // nb + 1, same for triangles

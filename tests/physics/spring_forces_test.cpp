@@ -60,7 +60,7 @@ TEST(SpringForces, PortableKernelIsHookeWithDampingAlongTheSpring) {
 
 TEST(SpringForces, AvxKernelEqualsPortableBitForBit) {
   std::vector<Vec4> probe(1, Vec4::Zero());
-  if (!spring_detail::linear_springs_avx({}, 0, probe, probe, probe)) GTEST_SKIP() << "no AVX here";
+  if (!spring_detail::linear_springs_avx({}, {}, 0, probe, probe, probe)) GTEST_SKIP() << "no AVX here";
   for (unsigned seed = 0; seed < 20; ++seed) {
     SpringSet s = random_springs(4 * 25 + static_cast<int>(seed % 4), 11, seed);
     // Coincident ends in one group, a non-finite position in another.
@@ -68,7 +68,8 @@ TEST(SpringForces, AvxKernelEqualsPortableBitForBit) {
     if (seed % 2) s.x[s.springs[13].a][2] = std::numeric_limits<double>::quiet_NaN();
     std::vector<Vec4> portable(s.x.size(), Vec4::Constant(0.25)), wide = portable;
     spring_detail::linear_springs_portable(s.springs, 0.02, s.x, s.v, portable);
-    ASSERT_TRUE(spring_detail::linear_springs_avx(s.springs, 0.02, s.x, s.v, wide));
+    const std::vector<SpringGroup4> groups = pack_spring_groups(s.springs);
+    ASSERT_TRUE(spring_detail::linear_springs_avx(s.springs, groups, 0.02, s.x, s.v, wide));
     EXPECT_TRUE(bit_equal(portable, wide)) << "seed " << seed;
   }
 }
