@@ -80,9 +80,9 @@ S4D_AVX_TARGET void pass_avx_kernel(const VertexArrays<4>& a, const VertexPassPa
   double fastest2 = r.fastest2;
   for (int i = 0; i < n; ++i) {
     const bool pinned = a.pinned[i] != 0;
-    const __m256d x0 = load(a.x0[i]);
     __m256d x, v;
     if (pinned) {
+      const __m256d x0 = load(a.x0[i]);
       const __m256d to = _mm256_sub_pd(load(a.target[i]), x0);
       x = _mm256_add_pd(x0, _mm256_mul_pd(along, to));
       v = _mm256_div_pd(to, dt);
@@ -102,7 +102,7 @@ S4D_AVX_TARGET void pass_avx_kernel(const VertexArrays<4>& a, const VertexPassPa
     // std::max drops a NaN squared norm here as in the portable pass; the sum below keeps it.
     if (!pinned) fastest2 = std::max(fastest2, squared_norm(v));
     nonfinite = _mm256_add_pd(nonfinite, _mm256_add_pd(_mm256_mul_pd(zero, x), _mm256_mul_pd(zero, v)));
-    if (squared_norm(_mm256_sub_pd(x, x0)) > limit2) clamp(a, i, pinned, p.limit, r.clamps);
+    if (squared_norm(_mm256_sub_pd(x, load(a.x0[i]))) > limit2) clamp(a, i, pinned, p.limit, r.clamps);
   }
   store(r.nonfinite, nonfinite);
   r.fastest2 = fastest2;
