@@ -227,6 +227,21 @@ class SelfProximity {
   // sorted by the other leaf. Redone when the tree is rebuilt.
   static constexpr int kLeafBits = 8;
   static_assert(Bvh<D>::kLeafSize <= kLeafBits, "leaf masks hold 8 × 8 slot pairs");
+  // A byte's bits in every row of a mask; the pairs (i, j) with j > i.
+  static constexpr std::uint64_t kEachRow = 0x0101010101010101ull;
+  static constexpr std::uint64_t kStrictUpper = [] {
+    std::uint64_t m = 0;
+    for (int i = 0; i < kLeafBits; ++i) m |= std::uint64_t{(0xFFu << (i + 1)) & 0xFFu} << (i * kLeafBits);
+    return m;
+  }();
+  // Bit i set when row i of a mask has a bit set: each row folded onto its lowest bit, and those
+  // eight bits gathered into the top byte by one multiplication (no two products meet).
+  static unsigned nonzero_rows(std::uint64_t m) {
+    m |= m >> 4;
+    m |= m >> 2;
+    m |= m >> 1;
+    return static_cast<unsigned>(((m & kEachRow) * 0x0102040810204080ull) >> 56);
+  }
   struct LeafMask {
     int other = 0;
     std::uint64_t allowed = ~std::uint64_t{0};
@@ -285,13 +300,15 @@ void SelfProximity<D, K>::candidate_pairs(double margin, F&& f) const {
     if (allowed == 0) return;
     const int fa = bvh_.leaf_first(la), ca = bvh_.leaf_size(la);
     const int fb = bvh_.leaf_first(lb), cb = bvh_.leaf_size(lb);
-    const unsigned lanes = (1u << cb) - 1;
-    // The rows near lb's box at all, tested together (all of them within one leaf).
-    const unsigned near_rows = la == lb ? ~0u : bvh_.leaf_rows_near(la, lb, r2);
-    for (int i = 0; i < ca; ++i) {
-      unsigned row = static_cast<unsigned>(allowed >> (i * kLeafBits)) & lanes;
-      if (la == lb) row &= ~((2u << i) - 1);  // within one leaf: j > i only
-      if (row == 0 || !(near_rows >> i & 1u)) continue;
+    // The slot pairs to test, all rows at once: lb's lanes only, and within one leaf j > i only.
+    allowed &= kEachRow * ((1u << cb) - 1);
+    if (la == lb) allowed &= kStrictUpper;
+    // The rows with a pair left that are near lb's box at all (those tested together).
+    unsigned rows = nonzero_rows(allowed) & ((1u << ca) - 1);
+    if (rows != 0 && la != lb) rows &= bvh_.leaf_rows_near(la, lb, r2);
+    for (; rows != 0; rows &= rows - 1) {
+      const int i = __builtin_ctz(rows);
+      unsigned row = static_cast<unsigned>(allowed >> (i * kLeafBits)) & 0xFFu;
       float g2[Bvh<D>::kLeafSize];
       row &= bvh_.leaf_gaps2(fa + i, lb, r2, g2);
       const int p = bvh_.id(fa + i);
