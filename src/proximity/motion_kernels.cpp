@@ -201,13 +201,11 @@ S4D_AVX_TARGET std::size_t edge_maxima_avx(const Vec<4>* u, const std::array<int
   return i;
 }
 
-// 3 sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
+// sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
 // bits); returns how many it did.
-S4D_AVX_TARGET int triple_roots_avx(double* a, int n) {
-  const __m256d three = _mm256_set1_pd(3.0);
+S4D_AVX_TARGET int square_roots_avx(double* a, int n) {
   int v = 0;
-  for (; v + 4 <= n; v += 4)
-    _mm256_storeu_pd(a + v, _mm256_mul_pd(three, _mm256_sqrt_pd(_mm256_loadu_pd(a + v))));
+  for (; v + 4 <= n; v += 4) _mm256_storeu_pd(a + v, _mm256_sqrt_pd(_mm256_loadu_pd(a + v)));
   return v;
 }
 #endif
@@ -229,15 +227,50 @@ void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> 
   }
 }
 
-void triple_roots(double* a, int n) {
+void square_roots(double* a, int n) {
   int done = 0;
 #if S4D_X86
-  if (cpu::kHasAvx) done = triple_roots_avx(a, n);
+  if (cpu::kHasAvx) done = square_roots_avx(a, n);
 #endif
-  for (int v = done; v < n; ++v) a[v] = 3 * std::sqrt(a[v]);
+  for (int v = done; v < n; ++v) a[v] = std::sqrt(a[v]);
+}
+
+template <int D, int K>
+void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<const Cell<K>> cells,
+                        std::vector<double>& own_v, std::vector<double>& around_v,
+                        std::vector<double>& ring_v) {
+  // Raw pointers: through the vectors, every store would make the compiler reload their data.
+  const int nv = topo.vertex_count, nc = static_cast<int>(cells.size());
+  own_v.assign(nv, 0.0);
+  double* own = own_v.data();  // per vertex: the largest |u_p - u_q|² of its edges
+  raise_to_edge_changes<D>(u, topo.edges, own);
+  around_v.assign(own_v.begin(), own_v.end());
+  double* around = around_v.data();  // the same over the vertex and its neighbours
+  for (const auto& e : topo.edges) {
+    const double o0 = own[e[0]], o1 = own[e[1]];
+    around[e[0]] = std::max(around[e[0]], o1);
+    around[e[1]] = std::max(around[e[1]], o0);
+  }
+  // Roots once a vertex (monotone: the same as once a cell).
+  square_roots(own, nv);
+  square_roots(around, nv);
+  ring_v.resize(nc);
+  double* ring = ring_v.data();
+  const Cell<K>* c = cells.data();
+  for (int k = 0; k < nc; ++k) {
+    double b = own[c[k][0]], cc = around[c[k][0]];
+    for (int i = 1; i < K; ++i) {
+      b = std::max(b, own[c[k][i]]);
+      cc = std::max(cc, around[c[k][i]]);
+    }
+    ring[k] = 2 * b + cc;
+  }
 }
 
 #define S4D_INSTANTIATE_CELLS(D, K)                                                                \
+  template void ring_motion_bounds<D, K>(const Vec<D>*, const CellTopology<K>&,                    \
+                                         std::span<const Cell<K>>, std::vector<double>&,           \
+                                         std::vector<double>&, std::vector<double>&);              \
   template double stored_axis_gap_portable<D, K>(std::span<const Vec<D>>, const Cell<K>&,          \
                                                  const Cell<K>&, const std::array<float, D>&);     \
   template double motion_since_snapshot<D, K>(std::span<const Vec<D>>, const Cell<K>&,             \

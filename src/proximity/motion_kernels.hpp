@@ -11,6 +11,7 @@
 
 #include "core/avx4.hpp"
 #include "core/vec.hpp"
+#include "proximity/cell_topology.hpp"
 #include "proximity/cells.hpp"
 
 namespace s4d::prox_detail {
@@ -43,8 +44,19 @@ double motion_since_snapshot(std::span<const Vec<D>> x, const Cell<K>& a, const 
 // own[v] = max(own[v], |u_p - u_q|²) over the edges (p, q) at each vertex v.
 template <int D>
 void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges, double* own);
-// a[v] = 3 sqrt(a[v]) for v < n.
-void triple_roots(double* a, int n);
+// a[v] = sqrt(a[v]) for v < n.
+void square_roots(double* a, int n);
+
+// ring[c], for every cell c, bounds M_cb = max |u_i - u_j| (i of c, j of b) over every ring
+// partner b of c: 2 B + C, where B is the largest |u_p - u_q| over the edges at c's vertices and
+// C the same over the edges at their neighbours. Any i of c joins any j of b through an edge of c
+// (i to p, at p), the ring edge (p to q, at p) and an edge of b (q to j, at q, a neighbour of p).
+// Never more than the 3 C of one maximum over all three, and less where the motion is uneven.
+// own and around are scratch (nv each): per vertex, B's and C's terms.
+template <int D, int K>
+void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<const Cell<K>> cells,
+                        std::vector<double>& own, std::vector<double>& around,
+                        std::vector<double>& ring);
 
 #if S4D_X86
 // max |p_i - q_j|² over three points p and three q in R^4, the portable loop's bits: each squared

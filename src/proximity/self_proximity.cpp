@@ -154,28 +154,7 @@ template <int D, int K>
 void SelfProximity<D, K>::compute_ring_bounds(MotionBounds& m) {
   // Worked out for every cell at once (each edge once): asked for one cell, a query asks for a
   // good share of them (measured: a lazy cell-by-cell version cost more on both benchmarks).
-  // Raw pointers: through the vectors, every store would make the compiler reload their data.
-  const int nv = topo_.vertex_count, nc = static_cast<int>(cells_.size());
-  const Vec<D>* u = m.u->data();
-  m.edge_max.assign(nv, 0.0);
-  double* own = m.edge_max.data();  // per vertex: the largest |u_p - u_q|² of its edges
-  raise_to_edge_changes<D>(u, topo_.edges, own);
-  m.around.assign(m.edge_max.begin(), m.edge_max.end());
-  double* around = m.around.data();  // the same over the vertex and its neighbours
-  for (const auto& e : topo_.edges) {
-    const double o0 = own[e[0]], o1 = own[e[1]];
-    around[e[0]] = std::max(around[e[0]], o1);
-    around[e[1]] = std::max(around[e[1]], o0);
-  }
-  triple_roots(around, nv);  // once a vertex (monotone: the same as once a cell)
-  m.ring.resize(nc);
-  double* ring = m.ring.data();
-  const Cell<K>* cells = cells_.data();
-  for (int c = 0; c < nc; ++c) {
-    double w = around[cells[c][0]];
-    for (int i = 1; i < K; ++i) w = std::max(w, around[cells[c][i]]);
-    ring[c] = w;
-  }
+  ring_motion_bounds<D, K>(m.u->data(), topo_, cells_, m.edge_max, m.around, m.ring);
   m.ring_valid = true;
 }
 

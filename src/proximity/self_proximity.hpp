@@ -38,7 +38,7 @@ enum class RingPairs { kInclude, kExclude };
 //  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh), on a fine mesh
 //    most of what any query near the mesh's own spacing finds. They do not depend on the list:
 //    the strain of the edges around a cell bounds M_ab for all its ring partners at once (three
-//    edges join any vertex of a to any of b), and each cell sums these bounds over the moves
+//    edges join any vertex of a to any of b; see ring_bounds), and each cell sums these bounds over the moves
 //    between the queries that look at ring pairs (an odometer, S_a). A pair proven at least L
 //    apart keeps G = L + S_a, and dist_ab >= G - S_a for as long as the odometer runs: a bound
 //    re-proven now loses nothing of the motion before, and far pairs cost a comparison per cell.
@@ -125,8 +125,8 @@ class SelfProximity {
     const std::vector<Vec<D>>* u = nullptr;
     double rho = 0;
     std::vector<double> ring;             // per cell, once ring_valid
-    // Scratch, per vertex: the largest squared change of its edges; 3 × the root of that over the
-    // vertex and its neighbours.
+    // Scratch, per vertex: the largest change of its edges (squared, then its root); the same over
+    // the vertex and its neighbours.
     std::vector<double> edge_max, around;
     bool ring_valid = false;
     void reset(const std::vector<Vec<D>>* field, double radius) {
@@ -135,8 +135,7 @@ class SelfProximity {
       ring_valid = false;
     }
   };
-  // Per cell a, 3 × the largest |u_p - u_q| over the edges at a's vertices and their neighbours:
-  // three such edges join any vertex of a to any vertex of a ring partner.
+  // Per cell a, a bound of M_ab over all its ring partners b (prox_detail::ring_motion_bounds).
   const double* ring_bounds(MotionBounds& m) {
     if (!m.ring_valid) compute_ring_bounds(m);
     return m.ring.data();

@@ -1,0 +1,87 @@
+// The ring pairs' motion bound against brute force: for random displacement fields on grids and
+// on a closed mesh, every ring pair's largest relative motion is within both of its cells' bounds.
+#include "proximity/motion_kernels.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+std::vector<Cell<3>> grid_cells(int n) {
+  std::vector<Cell<3>> cells;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j;
+      cells.push_back({a, a + 1, a + n + 1});
+      cells.push_back({a, a + n + 1, a + n});
+    }
+  return cells;
+}
+
+// Returns the largest ratio M_ab / bound seen (at most 1 when the bound holds).
+double worst_ratio(const std::vector<Cell<3>>& cells, int nv, unsigned seed) {
+  const CellTopology<3> topo(cells, nv);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0, 1);
+  std::vector<double> own, around, ring;
+  double worst = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    // Uniform noise, or a few fast vertices in a slow field: the uneven motion where 2 B + C
+    // is well below 3 C, and where a bound too tight would show.
+    std::vector<Vec4> u(nv);
+    for (int v = 0; v < nv; ++v) {
+      const double scale = trial % 2 == 0 ? 1.0 : (rng() % 17 == 0 ? 5.0 : 0.05);
+      u[v] = scale * Vec4(normal(rng), normal(rng), normal(rng), normal(rng));
+    }
+    prox_detail::ring_motion_bounds<4, 3>(u.data(), topo, cells, own, around, ring);
+    for (int a = 0; a < static_cast<int>(cells.size()); ++a)
+      for (int k = topo.ring_offset[a]; k < topo.ring_offset[a + 1]; ++k) {
+        const int b = topo.ring[k];
+        double m = 0;
+        for (int i : cells[a])
+          for (int j : cells[b]) m = std::max(m, (u[i] - u[j]).norm());
+        worst = std::max(worst, m / std::min(ring[a], ring[b]));
+      }
+  }
+  return worst;
+}
+
+TEST(MotionKernels, RingBoundHoldsForEveryRingPair) {
+  for (int n : {5, 9, 16}) {
+    const double r = worst_ratio(grid_cells(n), n * n, static_cast<unsigned>(n));
+    EXPECT_LE(r, 1.0) << "grid " << n;
+    EXPECT_GT(r, 0.5) << "grid " << n << ": the bound should be near tight somewhere";
+  }
+  const Surface<4> torus = std::get<Surface<4>>(generate("clifford-torus", {{"n", 12}, {"m", 9}}));
+  std::vector<Cell<3>> cells(torus.triangles.begin(), torus.triangles.end());
+  EXPECT_LE(worst_ratio(cells, static_cast<int>(torus.vertices.size()), 7), 1.0);
+}
+
+// A field that only translates leaves every bound zero; one edge stretched raises its cells'.
+TEST(MotionKernels, RingBoundIsZeroForATranslationAndSeesOneEdge) {
+  const int n = 6;
+  const auto cells = grid_cells(n);
+  const CellTopology<3> topo(cells, n * n);
+  std::vector<Vec4> u(n * n, Vec4(0.3, -1, 2, 0.5));
+  std::vector<double> own, around, ring;
+  prox_detail::ring_motion_bounds<4, 3>(u.data(), topo, cells, own, around, ring);
+  for (double r : ring) EXPECT_EQ(r, 0.0);
+  u[14] += Vec4(0, 0, 0, 1);  // every edge at vertex 14 changes by 1
+  prox_detail::ring_motion_bounds<4, 3>(u.data(), topo, cells, own, around, ring);
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const bool has = std::count(cells[c].begin(), cells[c].end(), 14) > 0;
+    if (has) {
+      EXPECT_DOUBLE_EQ(ring[c], 3.0) << c;  // B = C = 1
+    }
+    EXPECT_LE(ring[c], 3.0) << c;
+  }
+}
+
+}  // namespace
+}  // namespace s4d
