@@ -189,7 +189,9 @@ void SelfProximity<D, K>::advance_ring(std::span<const Vec<D>> x) {
     if (std::isfinite(rho)) {
       ring_motion_.reset(&ring_move_, rho);
       const double* ring = ring_bounds(ring_motion_);
-      for (int a = 0; a < nc; ++a) run_odometer(a, std::min(2 * rho, ring[a]));
+      double* odos = ring_odo_.data();
+      double* mins = ring_min_.data();
+      for (int a = 0; a < nc; ++a) run_odometer(odos, mins, a, std::min(2 * rho, ring[a]));
       x_ring_.assign(x.begin(), x.end());
       return;
     }

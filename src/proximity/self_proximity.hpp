@@ -154,12 +154,14 @@ class SelfProximity {
   void advance_ring(std::span<const Vec<D>> x);
   // S_a += m, settled into the cell's bounds once it outgrows their slack, so that G - S_a never
   // loses precision to a large S_a.
-  void run_odometer(int a, double m) {
-    double& odo = ring_odo_[a];
+  void run_odometer(int a, double m) { run_odometer(ring_odo_.data(), ring_min_.data(), a, m); }
+  // The same through the arrays' data (a loop over every cell holds them in registers).
+  void run_odometer(double* odos, double* mins, int a, double m) {
+    double& odo = odos[a];
     odo += m;
-    if (!(odo > std::abs(ring_min_[a] - odo))) return;
+    if (!(odo > std::abs(mins[a] - odo))) return;
     for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) ring_gap_[k] -= odo;
-    ring_min_[a] -= odo;
+    mins[a] -= odo;
     odo = 0;
   }
   // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
@@ -361,26 +363,34 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   // would use its slack up several times as fast (measured on the crumpled cloth: 2ρ is about 7 ×
   // a cell's bound) and bring it due all the sooner.
   const double* ring = ring_bounds_wanted_ && step_coarse > 0 ? ring_bounds(step_motion_) : nullptr;
-  for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-    const double odo = ring_odo_[a];
+  // Raw pointers for the scan of every cell: through the vectors, each call below would make the
+  // compiler reload their data.
+  const int nc = static_cast<int>(cells_.size());
+  const int* ring_offset = topo_.ring_offset.data();
+  const int* partner = topo_.ring.data();
+  double* odos = ring_odo_.data();
+  double* mins = ring_min_.data();
+  double* gaps = ring_gap_.data();  // +inf in the fringe
+  for (int a = 0; a < nc; ++a) {
+    const double odo = odos[a];
     double reach = ring ? std::min(step_coarse, ring[a]) : step_coarse;
-    if (ring_min_[a] - odo - reach > th) {
-      run_odometer(a, reach);
+    if (mins[a] - odo - reach > th) {
+      run_odometer(odos, mins, a, reach);
       continue;
     }
     if (!ring) {
       ring = ring_bounds(step_motion_);
       reach = std::min(step_coarse, ring[a]);
-      if (ring_min_[a] - odo - reach > th) {
-        run_odometer(a, reach);
+      if (mins[a] - odo - reach > th) {
+        run_odometer(odos, mins, a, reach);
         continue;
       }
     }
     double lowest = std::numeric_limits<double>::infinity();
-    for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
-      double& gap = ring_gap_[k];  // +inf in the fringe
+    for (int k = ring_offset[a], end = ring_offset[a + 1]; k < end; ++k) {
+      double gap = gaps[k];
       if (gap - odo - reach <= th) {
-        const int b = topo_.ring[k];
+        const int b = partner[k];
         // Its cached axis first, even when its own motion would settle it: the axis usually
         // proves the pair far enough apart for many steps. Most are settled against the cell's
         // bound (reach >= the pair's own motion s), without working out s (measured: physics
@@ -396,11 +406,12 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
         // At x1 the pair is at least lower - s apart, and the odometer will have run on by reach
         // (>= s): the pair keeps what its own motion did not use, or it would stay due.
         gap = std::max(gap, lower - s + odo + reach);
+        gaps[k] = gap;
       }
       lowest = std::min(lowest, gap);
     }
-    ring_min_[a] = lowest;
-    run_odometer(a, reach);
+    mins[a] = lowest;
+    run_odometer(odos, mins, a, reach);
   }
   ring_bounds_wanted_ = ring != nullptr;
   x_ring_.assign(x1.begin(), x1.end());
