@@ -232,19 +232,10 @@ TEST(MeshProximity, CoherentQueriesEqualFreshOnesAlongAMotion) {
   check_coherent_sequence<4, 2>(14);
 }
 
-// An n × n grid of triangles, and its vertices folded in R^4 at a phase of a motion: stretched in
-// the plane by `stretch`, folded into z and w by `fold`, with w moving at `w_rate` × the phase.
-std::vector<Cell<3>> grid_cells(int n) {
-  std::vector<Cell<3>> cells;
-  for (int i = 0; i + 1 < n; ++i)
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j;
-      cells.push_back({a, a + 1, a + n + 1});
-      cells.push_back({a, a + n + 1, a + n});
-    }
-  return cells;
-}
+using test::grid_cells;
 
+// The vertices of an n × n grid folded in R^4 at a phase of a motion: stretched in the plane by
+// `stretch`, folded into z and w by `fold`, with w moving at `w_rate` × the phase.
 std::vector<Vec4> folded_grid(int n, double phase, double stretch, double fold, double w_rate) {
   std::vector<Vec4> x;
   for (int i = 0; i < n; ++i)

@@ -8,21 +8,13 @@
 #include <random>
 #include <vector>
 
+#include "proximity/reference.hpp"
 #include "shape/generators.hpp"
 
 namespace s4d {
 namespace {
 
-std::vector<Cell<3>> grid_cells(int n) {
-  std::vector<Cell<3>> cells;
-  for (int i = 0; i + 1 < n; ++i)
-    for (int j = 0; j + 1 < n; ++j) {
-      const int a = i * n + j;
-      cells.push_back({a, a + 1, a + n + 1});
-      cells.push_back({a, a + n + 1, a + n});
-    }
-  return cells;
-}
+using test::grid_cells;
 
 // Returns the largest ratio M_ab / bound seen (at most 1 when the bound holds).
 double worst_ratio(const std::vector<Cell<3>>& cells, int nv, unsigned seed) {

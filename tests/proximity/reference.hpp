@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <vector>
 
 #include "core/vec.hpp"
 
@@ -132,6 +133,18 @@ Vec<D> random_vec(std::mt19937& rng, double scale = 1) {
   Vec<D> v;
   for (int i = 0; i < D; ++i) v[i] = u(rng);
   return v;
+}
+
+// The triangles of an n × n grid of vertices (vertex (i, j) is i·n + j), two a square.
+inline std::vector<std::array<int, 3>> grid_cells(int n) {
+  std::vector<std::array<int, 3>> cells;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j;
+      cells.push_back({a, a + 1, a + n + 1});
+      cells.push_back({a, a + n + 1, a + n});
+    }
+  return cells;
 }
 
 }  // namespace s4d::test
