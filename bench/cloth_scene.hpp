@@ -3,6 +3,7 @@
 // and crumples against itself.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "physics/world.hpp"
@@ -62,6 +63,45 @@ std::unique_ptr<World<D>> crumpled_cloth(int n, int settle_steps) {
     drive_corners(*w, n, w->data().time);
     w->step();
   }
+  return w;
+}
+
+// A cloth folded in half onto itself (layers `gap` apart, joined by a tight fold).
+template <int D>
+Surface<D> folded_cloth(int n, double gap) {
+  Surface<D> s = flat_cloth<D>(n, 1.0);
+  const double r = gap / 2, fold = 0.5, pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double a = static_cast<double>(i) / (n - 1);  // arc length along the cloth
+      Vec<D>& p = s.vertices[static_cast<std::size_t>(i) * n + j];
+      if (a <= fold) {
+        p[0] = a - 0.5;
+        p[1] = 0;
+      } else if (a < fold + pi * r) {
+        const double th = (a - fold) / r;
+        p[0] = fold - 0.5 + r * std::sin(th);
+        p[1] = r * (1 - std::cos(th));
+      } else {
+        p[0] = fold - 0.5 - (a - fold - pi * r);
+        p[1] = gap;
+      }
+    }
+  return s;
+}
+
+// That cloth (layers 1.6 δ apart), its lower half pinned flat like a table: gravity lays the
+// upper half onto it, so every step has a layer of resting contacts, the contact-heavy case the
+// free-folding cloth lacks.
+template <int D>
+std::unique_ptr<World<D>> folded_cloth_on_table(int n) {
+  const PhysicsParams<D> params = cloth_params<D>(n);
+  ModelBuilder<D> b(params);
+  b.add_body(folded_cloth<D>(n, 1.6 * params.thickness));
+  auto w = std::make_unique<World<D>>(b.build());
+  for (int i = 0; i < n; ++i)
+    if (static_cast<double>(i) / (n - 1) < 0.5 - 1.0 / (n - 1))
+      for (int j = 0; j < n; ++j) w->pin(i * n + j);
   return w;
 }
 

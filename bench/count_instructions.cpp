@@ -1,9 +1,9 @@
-// Counts the instructions of the three figures issues 4 and 5 track, under callgrind: one physics
-// step of the crumpled 4D cloth, one stepping "pairs within δ" query and one stepping earliest-
-// impact query on the crumpled grid. Wall-clock runs on this VM swing by ±25 %; instruction counts
+// Counts the instructions of the figures issues 4 and 5 track, under callgrind: one physics step
+// of the crumpled 4D cloth (or of the folded one, resting on itself), one stepping "pairs within
+// δ" query and one stepping earliest-impact query on the crumpled grid. Wall-clock runs on this VM swing by ±25 %; instruction counts
 // repeat exactly, so they are what a change is judged by (scripts/count-instructions.sh runs it).
 //
-// Usage: count_instructions physics|pairs|impact [--n 64] [--warmup W] [--steps S]
+// Usage: count_instructions physics|folded|pairs|impact [--n 64] [--warmup W] [--steps S]
 // Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
 // their mean wall time as well.
 #include <chrono>
@@ -98,6 +98,22 @@ double physics(const Options& o) {
   return ms;
 }
 
+// physics_bench's folded cloth resting on itself: steps 201–300 at the defaults.
+double folded(const Options& o) {
+  std::unique_ptr<World<4>> w = folded_cloth_on_table<4>(o.n);
+  const double ms = measure(o, 200, [&](int, bool timed) {
+    if (!timed) {
+      w->step();
+      return 0.0;
+    }
+    return collected([&] { w->step(); });
+  });
+  std::printf("folded: state hash %016llx after %lld steps, %d contacts in the last\n",
+              static_cast<unsigned long long>(state_hash(w->positions())),
+              static_cast<long long>(w->data().steps), w->data().last_contacts);
+  return ms;
+}
+
 double pairs(const Options& o) {
   SelfProximity<4, 3> q(grid_triangles(o.n));
   std::vector<ProximityPair<4>> out;
@@ -133,7 +149,7 @@ double impact(const Options& o) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: count_instructions physics|pairs|impact [--n N] [--warmup W] [--steps S]\n");
+               "usage: count_instructions physics|folded|pairs|impact [--n N] [--warmup W] [--steps S]\n");
   return 2;
 }
 
@@ -156,6 +172,7 @@ int main(int argc, char** argv) {
   if ((argc - 2) % 2 != 0) return usage();
   double ms = 0;
   if (o.what == "physics") ms = physics(o);
+  else if (o.what == "folded") ms = folded(o);
   else if (o.what == "pairs") ms = pairs(o);
   else if (o.what == "impact") ms = impact(o);
   else return usage();

@@ -25,6 +25,7 @@ using bench::cloth_params;
 using bench::crumpled_cloth;
 using bench::drive_corners;
 using bench::flat_cloth;
+using bench::folded_cloth_on_table;
 
 template <int D>
 int pass_throughs(std::span<const Vec<D>> x, const std::vector<Triangle>& tris) {
@@ -58,41 +59,10 @@ void BM_Cloth4DCrumpledStep(benchmark::State& state) {
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(64)->Iterations(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(128)->Iterations(60)->Unit(benchmark::kMillisecond);
 
-// A cloth folded in half onto itself (layers 1.6 δ apart at the start, joined by a tight fold),
-// its lower half pinned flat like a table: gravity lays the upper half onto it, so every step
-// has a layer of resting contacts, the contact-heavy case the free-folding cloth above lacks.
-template <int D>
-Surface<D> folded_cloth(int n, double gap) {
-  Surface<D> s = flat_cloth<D>(n, 1.0);
-  const double r = gap / 2, fold = 0.5, pi = 3.14159265358979323846;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double a = static_cast<double>(i) / (n - 1);  // arc length along the cloth
-      Vec<D>& p = s.vertices[static_cast<std::size_t>(i) * n + j];
-      if (a <= fold) {
-        p[0] = a - 0.5;
-        p[1] = 0;
-      } else if (a < fold + pi * r) {
-        const double th = (a - fold) / r;
-        p[0] = fold - 0.5 + r * std::sin(th);
-        p[1] = r * (1 - std::cos(th));
-      } else {
-        p[0] = fold - 0.5 - (a - fold - pi * r);
-        p[1] = gap;
-      }
-    }
-  return s;
-}
-
 void BM_Cloth4DFoldedContactStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  const PhysicsParams<4> params = cloth_params<4>(n);
-  ModelBuilder<4> b(params);
-  b.add_body(folded_cloth<4>(n, 1.6 * params.thickness));
-  World<4> w(b.build());
-  for (int i = 0; i < n; ++i)
-    if (static_cast<double>(i) / (n - 1) < 0.5 - 1.0 / (n - 1))
-      for (int j = 0; j < n; ++j) w.pin(i * n + j);
+  auto world = folded_cloth_on_table<4>(n);
+  World<4>& w = *world;
   for (int s = 0; s < 200; ++s) w.step();  // the upper half settles onto the lower
   double contacts = 0;
   const long long runs0 = w.broad_phase_runs();

@@ -2,7 +2,7 @@
 # Instructions a physics step / stepping pairs query / stepping impact query (issues 4 and 5),
 # counted by callgrind over the measured steps only: repeatable to the instruction, unlike the
 # wall clock of this VM. Needs a build with benchmarks (scripts/test.sh makes build-test/).
-# Usage: scripts/count-instructions.sh [physics|pairs|impact ...] [-- --n 128 --steps 50]
+# Usage: scripts/count-instructions.sh [physics|folded|pairs|impact ...] [-- --n 128 --steps 50]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${COUNT_BIN:-build-test/bench/count_instructions}
