@@ -1,7 +1,8 @@
 // Counts the instructions of the figures issues 4 and 5 track, under callgrind: one physics step
 // of the crumpled 4D cloth (or of the folded one, resting on itself), one stepping "pairs within
-// δ" query and one stepping earliest-impact query on the crumpled grid. Wall-clock runs on this VM swing by ±25 %; instruction counts
-// repeat exactly, so they are what a change is judged by (scripts/count-instructions.sh runs it).
+// δ" query and one stepping earliest-impact query on the crumpled grid. Wall-clock runs on this VM
+// swing by ±25 %; instruction counts repeat exactly, so they are what a change is judged by
+// (scripts/count-instructions.sh runs it).
 //
 // Usage: count_instructions physics|folded|pairs|impact [--n 64] [--warmup W] [--steps S]
 // Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
@@ -11,7 +12,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <limits>
 #include <string>
 
 #if __has_include(<valgrind/callgrind.h>)
@@ -27,9 +27,6 @@
 namespace s4d::bench {
 namespace {
 
-// The same motion per step as proximity_bench's stepping runs.
-constexpr double kPhasePerStep = 0.002;
-
 struct Options {
   std::string what;
   int n = 64;
@@ -37,36 +34,33 @@ struct Options {
   int steps = 100;
 };
 
-double smallest_gap(SelfProximity<4, 3>& probe, int n, std::span<const Vec4> x) {
-  std::vector<ProximityPair<4>> near;
-  probe.pairs_within(x, 2 * grid_delta(n), near);
-  double d = std::numeric_limits<double>::infinity();
-  for (const auto& p : near) d = std::min(d, p.closest.distance);
-  return d;
-}
-
-// Runs `step(k)` for the warm-up, then for the measured steps with collection on; returns the
-// mean wall time of a measured step, in ms.
-template <class F>
-double measure(const Options& o, int default_warmup, F&& step) {
-  const int warmup = o.warmup >= 0 ? o.warmup : default_warmup;
-  for (int k = 0; k < warmup; ++k) step(k, false);
-  double seconds = 0;
-  for (int k = warmup; k < warmup + o.steps; ++k) seconds += step(k, true);
-  return 1e3 * seconds / o.steps;
-}
-
 using Clock = std::chrono::steady_clock;
 
-// Times f with collection on: callgrind counts only what runs between the toggles.
+// Runs query() once: when `timed`, with collection on (callgrind counts only what runs between
+// the toggles) and returning its wall time in s; otherwise uncounted, returning 0.
 template <class F>
-double collected(F&& f) {
+double run(bool timed, F&& query) {
+  if (!timed) {
+    query();
+    return 0;
+  }
   CALLGRIND_TOGGLE_COLLECT;
   const auto t0 = Clock::now();
-  f();
+  query();
   const auto t1 = Clock::now();
   CALLGRIND_TOGGLE_COLLECT;
   return std::chrono::duration<double>(t1 - t0).count();
+}
+
+// Runs step(timed) for the warm-up (timed false), then for the measured steps; returns the mean
+// wall time of a measured step, in ms.
+template <class F>
+double measure(const Options& o, int default_warmup, F&& step) {
+  const int warmup = o.warmup >= 0 ? o.warmup : default_warmup;
+  for (int k = 0; k < warmup; ++k) step(false);
+  double seconds = 0;
+  for (int k = 0; k < o.steps; ++k) seconds += step(true);
+  return 1e3 * seconds / o.steps;
 }
 
 // FNV-1a of the positions' bits: a change that claims the same physics must leave it as it was.
@@ -84,13 +78,9 @@ std::uint64_t state_hash(std::span<const Vec4> x) {
 // physics_bench's crumpled cloth: steps 611–710 at the defaults.
 double physics(const Options& o) {
   std::unique_ptr<World<4>> w = crumpled_cloth<4>(o.n, 0);
-  const double ms = measure(o, 610, [&](int, bool timed) {
+  const double ms = measure(o, 610, [&](bool timed) {
     drive_corners(*w, o.n, w->data().time);
-    if (!timed) {
-      w->step();
-      return 0.0;
-    }
-    return collected([&] { w->step(); });
+    return run(timed, [&] { w->step(); });
   });
   std::printf("physics: state hash %016llx after %lld steps, %lld list builds\n",
               static_cast<unsigned long long>(state_hash(w->positions())),
@@ -101,13 +91,7 @@ double physics(const Options& o) {
 // physics_bench's folded cloth resting on itself: steps 201–300 at the defaults.
 double folded(const Options& o) {
   std::unique_ptr<World<4>> w = folded_cloth_on_table<4>(o.n);
-  const double ms = measure(o, 200, [&](int, bool timed) {
-    if (!timed) {
-      w->step();
-      return 0.0;
-    }
-    return collected([&] { w->step(); });
-  });
+  const double ms = measure(o, 200, [&](bool timed) { return run(timed, [&] { w->step(); }); });
   std::printf("folded: state hash %016llx after %lld steps, %d contacts in the last\n",
               static_cast<unsigned long long>(state_hash(w->positions())),
               static_cast<long long>(w->data().steps), w->data().last_contacts);
@@ -118,14 +102,10 @@ double pairs(const Options& o) {
   SelfProximity<4, 3> q(grid_triangles(o.n));
   std::vector<ProximityPair<4>> out;
   double phase = 0;
-  return measure(o, 20, [&](int, bool timed) {
+  return measure(o, 20, [&](bool timed) {
     const auto x = crumpled_grid<4>(o.n, phase);
     phase += kPhasePerStep;
-    if (!timed) {
-      q.pairs_within(x, grid_delta(o.n), out);
-      return 0.0;
-    }
-    return collected([&] { q.pairs_within(x, grid_delta(o.n), out); });
+    return run(timed, [&] { q.pairs_within(x, grid_delta(o.n), out); });
   });
 }
 
@@ -133,17 +113,13 @@ double impact(const Options& o) {
   SelfProximity<4, 3> q(grid_triangles(o.n));
   SelfProximity<4, 3> probe(grid_triangles(o.n));  // the thickness, outside the count
   double phase = 0;
-  return measure(o, 20, [&](int, bool timed) {
+  return measure(o, 20, [&](bool timed) {
     const auto x0 = crumpled_grid<4>(o.n, phase);
     const auto x1 = crumpled_grid<4>(o.n, phase + kPhasePerStep);
     phase += kPhasePerStep;
     CcdOptions opt;
     opt.thickness = 0.995 * smallest_gap(probe, o.n, x0);
-    if (!timed) {
-      q.earliest_impact(x0, x1, opt);
-      return 0.0;
-    }
-    return collected([&] { q.earliest_impact(x0, x1, opt); });
+    return run(timed, [&] { q.earliest_impact(x0, x1, opt); });
   });
 }
 

@@ -1,7 +1,10 @@
 // The crumpled grid surface shared by the proximity benchmarks: an n × n grid of the unit square
 // displaced by a deterministic sum of sinusoids in every coordinate, so that folds come close.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "proximity/mesh_proximity.hpp"
@@ -39,5 +42,18 @@ inline std::vector<Cell<3>> grid_triangles(int n) {
 // Thickness for an n × n grid: half the grid spacing (scene units), so neighbouring rows are
 // outside it but folds that come close are inside.
 inline double grid_delta(int n) { return 0.5 / (n - 1); }
+
+// The phase a stepping run advances by each step (largest vertex motion about 6 % of δ).
+constexpr double kPhasePerStep = 0.002;
+
+// The smallest distance of two triangles sharing no vertex at x (infinity beyond 2δ), found by
+// `probe`, which a caller keeps from step to step so that it answers coherently.
+inline double smallest_gap(SelfProximity<4, 3>& probe, int n, std::span<const Vec4> x) {
+  std::vector<ProximityPair<4>> near;
+  probe.pairs_within(x, 2 * grid_delta(n), near);
+  double d = std::numeric_limits<double>::infinity();
+  for (const auto& p : near) d = std::min(d, p.closest.distance);
+  return d;
+}
 
 }  // namespace s4d::bench

@@ -14,11 +14,13 @@ while (($#)) && [[ $1 != -- ]]; do what+=("$1"); shift; done
 steps=100
 args=("$@")
 for ((i = 0; i < ${#args[@]}; i++)); do [[ ${args[i]} == --steps ]] && steps=${args[i + 1]}; done
+dir=$(mktemp -d)
 for w in "${what[@]}"; do
-  out=$(mktemp)
+  out=$dir/$w
   valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file="$out.cg" \
     "$bin" "$w" "$@" 2>"$out.log" | grep -v 'wall clock' || true
-  total=$(grep -o 'Collected : [0-9]*' "$out.log" | grep -o '[0-9]*$')
+  total=$(grep -o 'Collected : [0-9]*' "$out.log" | grep -o '[0-9]*$' || true)
+  [[ -n $total ]] || { echo "count-instructions: no count for $w (see $out.log)" >&2; exit 1; }
   awk -v w="$w" -v t="$total" -v s="$steps" \
     'BEGIN { printf "%-8s %.3f M instructions a step (%d steps)\n", w, t / s / 1e6, s }'
   echo "  profile: callgrind_annotate $out.cg"
