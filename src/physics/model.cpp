@@ -9,8 +9,8 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "physics/spring_forces.hpp"
 #include "core/error.hpp"
+#include "physics/spring_forces.hpp"
 #include "proximity/bvh.hpp"
 #include "proximity/closest_points.hpp"
 #include "shape/topology.hpp"

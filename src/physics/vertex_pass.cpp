@@ -69,6 +69,13 @@ S4D_AVX_INLINE double squared_norm(__m256d d) {
   return _mm_cvtsd_f64(_mm_add_sd(s, _mm_unpackhi_pd(s, s)));
 }
 
+// start_force's operations on one register: (m g + f_ext) - c v.
+S4D_AVX_INLINE void start_force_avx(const VertexArrays<4>& a, int i, __m256d g, __m256d damping,
+                                    __m256d v) {
+  const __m256d weight = _mm256_mul_pd(_mm256_set1_pd(a.mass[i]), g);
+  store(a.force[i], _mm256_sub_pd(_mm256_add_pd(weight, load(a.f_ext[i])), _mm256_mul_pd(damping, v)));
+}
+
 S4D_AVX_TARGET void pass_avx_kernel(const VertexArrays<4>& a, const VertexPassParams<4>& p,
                                     VertexPassResult<4>& r) {
   const int n = static_cast<int>(a.x.size());
@@ -94,28 +101,25 @@ S4D_AVX_TARGET void pass_avx_kernel(const VertexArrays<4>& a, const VertexPassPa
     store(a.x[i], x);
     store(a.v[i], v);
     if (!p.last) {
-      const __m256d weight = _mm256_mul_pd(_mm256_set1_pd(a.mass[i]), g);
-      store(a.force[i], _mm256_sub_pd(_mm256_add_pd(weight, load(a.f_ext[i])),
-                                      _mm256_mul_pd(damping, v)));
+      start_force_avx(a, i, g, damping, v);
       continue;
     }
     // std::max drops a NaN squared norm here as in the portable pass; the sum below keeps it.
     if (!pinned) fastest2 = std::max(fastest2, squared_norm(v));
-    nonfinite = _mm256_add_pd(nonfinite, _mm256_add_pd(_mm256_mul_pd(zero, x), _mm256_mul_pd(zero, v)));
-    if (squared_norm(_mm256_sub_pd(x, load(a.x0[i]))) > limit2) clamp(a, i, pinned, p.limit, r.clamps);
+    nonfinite =
+        _mm256_add_pd(nonfinite, _mm256_add_pd(_mm256_mul_pd(zero, x), _mm256_mul_pd(zero, v)));
+    if (squared_norm(_mm256_sub_pd(x, load(a.x0[i]))) > limit2)
+      clamp(a, i, pinned, p.limit, r.clamps);
   }
   store(r.nonfinite, nonfinite);
   r.fastest2 = fastest2;
 }
 
-S4D_AVX_TARGET void start_forces_avx(const VertexArrays<4>& a, const Vec<4>& gravity, double damping) {
+S4D_AVX_TARGET void start_forces_avx(const VertexArrays<4>& a, const Vec<4>& gravity,
+                                     double damping) {
   const int n = static_cast<int>(a.x.size());
   const __m256d g = load(gravity), c = _mm256_set1_pd(damping);
-  for (int i = 0; i < n; ++i) {
-    const __m256d weight = _mm256_mul_pd(_mm256_set1_pd(a.mass[i]), g);
-    store(a.force[i], _mm256_sub_pd(_mm256_add_pd(weight, load(a.f_ext[i])),
-                                    _mm256_mul_pd(c, load(a.v[i]))));
-  }
+  for (int i = 0; i < n; ++i) start_force_avx(a, i, g, c, load(a.v[i]));
 }
 #endif  // S4D_X86
 

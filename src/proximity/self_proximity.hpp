@@ -38,10 +38,11 @@ enum class RingPairs { kInclude, kExclude };
 //  - the ring pairs (fixed by the topology: next-nearest neighbours on the mesh), on a fine mesh
 //    most of what any query near the mesh's own spacing finds. They do not depend on the list:
 //    the strain of the edges around a cell bounds M_ab for all its ring partners at once (three
-//    edges join any vertex of a to any of b; see ring_bounds), and each cell sums these bounds over the moves
-//    between the queries that look at ring pairs (an odometer, S_a). A pair proven at least L
-//    apart keeps G = L + S_a, and dist_ab >= G - S_a for as long as the odometer runs: a bound
-//    re-proven now loses nothing of the motion before, and far pairs cost a comparison per cell.
+//    edges join any vertex of a to any of b; see ring_bounds), and each cell sums these bounds
+//    over the moves between the queries that look at ring pairs (an odometer, S_a). A pair proven
+//    at least L apart keeps G = L + S_a, and dist_ab >= G - S_a for as long as the odometer runs:
+//    a bound re-proven now loses nothing of the motion before, and far pairs cost a comparison per
+//    cell.
 //    Ring pairs that come near the margin move to the fringe, where each keeps a lower bound of
 //    its distance at its own snapshot (its six vertices' positions then): M_ab is then their
 //    exact relative motion since, and a pair is looked at again only once it has really moved
@@ -153,9 +154,8 @@ class SelfProximity {
   // it restarts their bounds from the cells' boxes at x and empties the fringe.
   void advance_ring(std::span<const Vec<D>> x);
   // S_a += m, settled into the cell's bounds once it outgrows their slack, so that G - S_a never
-  // loses precision to a large S_a.
-  void run_odometer(int a, double m) { run_odometer(ring_odo_.data(), ring_min_.data(), a, m); }
-  // The same through the arrays' data (a loop over every cell holds them in registers).
+  // loses precision to a large S_a. Through the data of ring_odo_ and ring_min_ (odos, mins),
+  // which a loop over every cell holds in registers.
   void run_odometer(double* odos, double* mins, int a, double m) {
     double& odo = odos[a];
     odo += m;
@@ -232,7 +232,8 @@ class SelfProximity {
   static constexpr std::uint64_t kEachRow = 0x0101010101010101ull;
   static constexpr std::uint64_t kStrictUpper = [] {
     std::uint64_t m = 0;
-    for (int i = 0; i < kLeafBits; ++i) m |= std::uint64_t{(0xFFu << (i + 1)) & 0xFFu} << (i * kLeafBits);
+    for (int i = 0; i < kLeafBits; ++i)
+      m |= std::uint64_t{(0xFFu << (i + 1)) & 0xFFu} << (i * kLeafBits);
     return m;
   }();
   // Bit i set when row i of a mask has a bit set: each row folded onto its lowest bit, and those
@@ -378,6 +379,8 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
       run_odometer(odos, mins, a, reach);
       continue;
     }
+    // Apart from the test above, which is all most cells pay: folding the two tests into one
+    // costs 21 k instructions a physics step (measured).
     if (!ring) {
       ring = ring_bounds(step_motion_);
       reach = std::min(step_coarse, ring[a]);
