@@ -124,6 +124,21 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
     ++acted;
   }
   stats.contacts = acted;
+  stats.nonfinite = !touched_finite(model, x1, v);
+}
+
+template <int D>
+bool CollisionSolver<D>::touched_finite(const Model<D>& model, std::span<const Vec<D>> x,
+                                        std::span<const Vec<D>> v) const {
+  // Per contact while contacts are few; beyond a sixth of the vertices the whole arrays are
+  // checked at once (a resting fold has thousands of contacts sharing each vertex).
+  if (6 * contacts_.size() > static_cast<std::size_t>(model.nv)) return all_finite<D>(x) && all_finite<D>(v);
+  const auto& tris = model.triangles;
+  for (const Contact& c : contacts_)
+    for (int q = 0; q < 3; ++q)
+      for (const int k : {tris[c.a][q], tris[c.b][q]})
+        if (!all_finite(x[k]) || !all_finite(v[k])) return false;
+  return true;
 }
 
 template <int D>

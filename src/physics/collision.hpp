@@ -24,6 +24,10 @@ struct CollisionStats {
   int frozen = 0;         // vertices stopped by the fail-safe
   int ccd_passes = 0;     // continuous passes run
   bool global_freeze = false;
+  // The repulsion left a non-finite position or velocity (absurd input overflowing): the caller
+  // rolls the step back. Only its impulses can do that: the integrator checked every vertex
+  // before, and the fail-safe only puts vertices back where they started.
+  bool nonfinite = false;
 };
 
 template <int D>
@@ -50,6 +54,9 @@ class CollisionSolver {
   void repulsion(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1,
                  std::span<Vec<D>> v, std::span<const std::uint8_t> pinned, double dt,
                  CollisionStats& stats);
+  // Whether the vertices of this step's contacts have finite positions and velocities.
+  bool touched_finite(const Model<D>& model, std::span<const Vec<D>> x,
+                      std::span<const Vec<D>> v) const;
   int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
 
   // All pair finding goes through one coherent proximity query (self_proximity.hpp): its list

@@ -77,7 +77,7 @@ void World<D>::step(double dt) {
     data_.last_contacts = cs.contacts;
     data_.warnings.ccd_freezes += cs.frozen;
     if (cs.global_freeze) ++data_.warnings.global_freezes;
-    ok = all_finite<D>(data_.x) && all_finite<D>(data_.v);
+    ok = !cs.nonfinite;
   }
   if (!ok) {
     // Roll back to the safe start and drop the momentum that blew up: repeating the same step

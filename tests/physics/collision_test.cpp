@@ -109,5 +109,39 @@ TEST(Collision, FrictionSlowsSlidingSlipperyDoesNot) {
   EXPECT_LT(rough, slippery - 0.1);
 }
 
+// The repulsion's impulses on finite but absurd input (heavy vertices closing at 1e308 m/s, so
+// the impulse overflows): the solver says so, for the world to roll the step back. The same
+// contact at a sane speed stays finite and says nothing.
+template <int D>
+bool repulsion_overflows(double speed) {
+  PhysicsParams<D> p = test::quiet_params<D>();
+  p.mass = 1e6;
+  ModelBuilder<D> b(p);
+  b.add_body(test::lone_triangle<D>(0.1));
+  Vec<D> off = Vec<D>::Zero();
+  off[D - 1] = 0.2 * p.thickness;  // within δ
+  b.add_body(test::lone_triangle<D>(0.1, off));
+  const Model<D> model = b.build();
+  CollisionSolver<D> solver(model);
+  const std::vector<Vec<D>> x0(model.initial.begin(), model.initial.end());
+  std::vector<Vec<D>> x1 = x0, v(x0.size(), Vec<D>::Zero());
+  for (int i = 3; i < 6; ++i) v[i][D - 1] = -speed;  // the upper triangle falls onto the lower
+  const std::vector<std::uint8_t> pinned(x0.size(), 0);
+  const CollisionStats stats = solver.solve(model, x0, x1, v, pinned, 1e-3);
+  EXPECT_GT(stats.contacts, 0);
+  bool finite = true;
+  for (std::size_t i = 0; i < x0.size(); ++i) finite = finite && all_finite(x1[i]) && all_finite(v[i]);
+  EXPECT_EQ(stats.nonfinite, !finite);
+  return stats.nonfinite;
+}
+TEST(Collision, OverflowingImpulseIsReportedD3) {
+  EXPECT_TRUE(repulsion_overflows<3>(1e308));
+  EXPECT_FALSE(repulsion_overflows<3>(1.0));
+}
+TEST(Collision, OverflowingImpulseIsReportedD4) {
+  EXPECT_TRUE(repulsion_overflows<4>(1e308));
+  EXPECT_FALSE(repulsion_overflows<4>(1.0));
+}
+
 }  // namespace
 }  // namespace s4d
