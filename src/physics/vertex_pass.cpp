@@ -115,11 +115,14 @@ S4D_AVX_TARGET void pass_avx_kernel(const VertexArrays<4>& a, const VertexPassPa
   r.fastest2 = fastest2;
 }
 
-S4D_AVX_TARGET void start_forces_avx(const VertexArrays<4>& a, const Vec<4>& gravity,
-                                     double damping) {
+S4D_AVX_TARGET void start_step_avx(const VertexArrays<4>& a, Vec<4>* x0, const Vec<4>& gravity,
+                                   double damping) {
   const int n = static_cast<int>(a.x.size());
   const __m256d g = load(gravity), c = _mm256_set1_pd(damping);
-  for (int i = 0; i < n; ++i) start_force_avx(a, i, g, c, load(a.v[i]));
+  for (int i = 0; i < n; ++i) {
+    store(x0[i], load(a.x[i]));
+    start_force_avx(a, i, g, c, load(a.v[i]));
+  }
 }
 #endif  // S4D_X86
 
@@ -144,13 +147,16 @@ bool pass_avx(const VertexArrays<4>& a, const VertexPassParams<4>& p, VertexPass
 }  // namespace vertex_detail
 
 template <int D>
-void start_forces(const VertexArrays<D>& a, const Vec<D>& gravity, double damping) {
+void start_step(const VertexArrays<D>& a, std::span<Vec<D>> x0, const Vec<D>& gravity, double damping) {
 #if S4D_X86
   if constexpr (D == 4)
-    if (cpu::kHasAvx) return start_forces_avx(a, gravity, damping);
+    if (cpu::kHasAvx) return start_step_avx(a, x0.data(), gravity, damping);
 #endif
   const int n = static_cast<int>(a.x.size());
-  for (int i = 0; i < n; ++i) start_force(a, i, gravity, damping);
+  for (int i = 0; i < n; ++i) {
+    x0[i] = a.x[i];
+    start_force(a, i, gravity, damping);
+  }
 }
 
 template <int D>
@@ -161,7 +167,7 @@ void vertex_pass(const VertexArrays<D>& a, const VertexPassParams<D>& p, VertexP
 }
 
 #define S4D_INSTANTIATE(D)                                                                       \
-  template void start_forces<D>(const VertexArrays<D>&, const Vec<D>&, double);                 \
+  template void start_step<D>(const VertexArrays<D>&, std::span<Vec<D>>, const Vec<D>&, double); \
   template void vertex_pass<D>(const VertexArrays<D>&, const VertexPassParams<D>&, VertexPassResult<D>&);
 S4D_INSTANTIATE(2)
 S4D_INSTANTIATE(3)

@@ -41,9 +41,10 @@ struct VertexPassResult {
   int clamps = 0;                          // motions clamped to the limit
 };
 
-// Starts every vertex's force: gravity, tool force and damping.
+// Starts a step in one pass: saves every position into x0 (a.x0's storage, the step's start) and
+// starts every vertex's force (gravity, tool force and damping).
 template <int D>
-void start_forces(const VertexArrays<D>& a, const Vec<D>& gravity, double damping);
+void start_step(const VertexArrays<D>& a, std::span<Vec<D>> x0, const Vec<D>& gravity, double damping);
 
 // One substep over the vertices, after the springs have added their forces.
 template <int D>

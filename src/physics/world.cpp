@@ -22,7 +22,6 @@ World<D>::World(Model<D> model) : model_(std::move(model)), collision_(model_) {
   data_.pinned.assign(n, 0);
   data_.force.assign(n, Vec<D>::Zero());
   data_.x0 = data_.x;
-  data_.v0 = data_.v;
 }
 
 template <int D>
@@ -52,7 +51,7 @@ int World<D>::integrate(double dt) {
   pass.gravity = m.params.gravity;
   pass.damping = m.params.damping;
   VertexPassResult<D> result;
-  start_forces<D>(arrays, pass.gravity, pass.damping);
+  start_step<D>(arrays, data_.x0, pass.gravity, pass.damping);
   for (int s = 0; s < n; ++s) {
     add_spring_forces<D>(m, data_.x, data_.v, data_.force);
     pass.along = static_cast<double>(s + 1) / n;
@@ -67,9 +66,7 @@ int World<D>::integrate(double dt) {
 template <int D>
 void World<D>::step(double dt) {
   if (!(dt > 0) || !std::isfinite(dt)) dt = model_.params.time_step;
-  std::copy(data_.x.begin(), data_.x.end(), data_.x0.begin());
-  std::copy(data_.v.begin(), data_.v.end(), data_.v0.begin());
-  const int clamps = integrate(dt);
+  const int clamps = integrate(dt);  // saves x into x0 first
   bool ok = clamps >= 0;
   if (ok) {
     data_.warnings.speed_clamps += clamps;

@@ -31,7 +31,8 @@ struct Data {
   std::vector<Vec<D>> target;       // nv × D, where a pinned vertex must be at the end of a step
   std::vector<std::uint8_t> pinned; // nv, 1 = position prescribed by target (kinematic)
   std::vector<Vec<D>> force;        // nv × D, scratch: total force of the current substep
-  std::vector<Vec<D>> x0, v0;       // nv × D each, state at the start of the step (roll-back)
+  std::vector<Vec<D>> x0;           // nv × D, positions at the start of the step (the fail-safe's
+                                    // safe state, and where a roll-back returns)
   double time = 0;                  // s
   std::int64_t steps = 0;
   int last_substeps = 0;            // substeps used by the last step
@@ -79,7 +80,7 @@ class World {
   double min_separation(double search) const;
 
  private:
-  // Substeps of forces and integration, then the paper's clamp of each vertex's motion to
+  // Saves x into x0, then substeps of forces and integration, then the paper's clamp of each vertex's motion to
   // max_step_motion (δ by default). Returns the motions clamped, or -1 when the result is
   // non-finite or too fast.
   int integrate(double dt);

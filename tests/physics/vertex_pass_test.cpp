@@ -79,6 +79,20 @@ TEST(VertexPass, MiddleSubstepIsSymplecticEulerThenTheNextForces) {
   EXPECT_EQ(r.clamps, 0);  // the middle substep neither clamps nor checks
 }
 
+TEST(VertexPass, StartStepSavesThePositionsAndStartsTheForces) {
+  State s = random_state(50, 4);
+  const State before = s;
+  const VertexPassParams<4> p = params(false);
+  start_step<4>(s.arrays(), s.x0, p.gravity, p.damping);
+  EXPECT_TRUE(bit_equal(s.x0, before.x));
+  EXPECT_TRUE(bit_equal(s.x, before.x));
+  EXPECT_TRUE(bit_equal(s.v, before.v));
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    const Vec4 f = before.mass[i] * p.gravity + before.f_ext[i] - p.damping * before.v[i];
+    EXPECT_LT((s.force[i] - f).norm(), 1e-12) << i;
+  }
+}
+
 TEST(VertexPass, LastSubstepClampsReportsTheFastestAndFlagsNonFiniteValues) {
   State s = random_state(40, 2);
   s.force[4] = Vec4(1e3, 0, 0, 0);  // a vertex pushed far past the limit
