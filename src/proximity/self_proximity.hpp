@@ -294,11 +294,14 @@ void SelfProximity<D, K>::candidate_pairs(double margin, F&& f) const {
   if (!(margin >= 0)) r2 = std::numeric_limits<float>::infinity();  // NaN: everything is near
   bvh_.self_leaf_pairs(margin, [&](int la, int lb) {
     std::uint64_t allowed = ~std::uint64_t{0};
-    const LeafMask* first = leaf_masks_.data() + leaf_mask_offset_[la];
-    const LeafMask* last = leaf_masks_.data() + leaf_mask_offset_[la + 1];
-    const LeafMask* e = std::lower_bound(first, last, lb,
-                                         [](const LeafMask& m, int other) { return m.other < other; });
-    if (e != last && e->other == lb) allowed = e->allowed;
+    // lb's entry among la's (sorted by other): a binary search whose steps depend only on the
+    // count, so that they compile to conditional moves (std::lower_bound's branches mispredict).
+    const LeafMask* e = leaf_masks_.data() + leaf_mask_offset_[la];
+    int n = leaf_mask_offset_[la + 1] - leaf_mask_offset_[la];
+    if (n > 0) {
+      for (; n > 1; n -= n / 2) e = e[n / 2 - 1].other < lb ? e + n / 2 : e;
+      if (e->other == lb) allowed = e->allowed;
+    }
     if (allowed == 0) return;
     const int fa = bvh_.leaf_first(la), ca = bvh_.leaf_size(la);
     const int fb = bvh_.leaf_first(lb), cb = bvh_.leaf_size(lb);
