@@ -41,8 +41,12 @@ void BM_Cloth4DCrumpledStep(benchmark::State& state) {
   for (auto _ : state) {
     drive_corners(*w, n, w->data().time);
     w->step();
+    state.PauseTiming();  // the step is timed, not this statistic of it
+    double move2 = 0;
     for (int i = 0; i < w->vertex_count(); ++i)
-      max_move = std::max(max_move, (w->data().x[i] - w->data().x0[i]).norm());
+      move2 = std::max(move2, (w->data().x[i] - w->data().x0[i]).squaredNorm());
+    max_move = std::max(max_move, std::sqrt(move2));
+    state.ResumeTiming();
   }
   state.counters["rebuilds_per_step"] =
       static_cast<double>(w->broad_phase_runs() - runs0) / static_cast<double>(state.iterations());
