@@ -48,22 +48,22 @@ void grid_springs(const Surface<D>& s, const Grid& g, double k, double shear, do
     if (a == b || !seen.insert(edge_key(a, b)).second) return;
     out.push_back({a, b, (s.vertices[a] - s.vertices[b]).norm(), stiffness, kind});
   };
-  // Kinds in order, so that a wrapped short grid keeps the stiffer kind of a repeated pair.
+  // Kinds in order, so that a wrapped short grid keeps the stiffer kind of a repeated pair; within
+  // a kind one direction at a time, so that runs of springs have consecutive first ends and one
+  // offset to the other (the R^4 kernel reads such a group of four without an index).
+  const auto each = [&](int di, int dj, SpringKind kind, double stiffness) {
+    for (int i = 0; i < g.rows; ++i)
+      for (int j = 0; j < g.cols; ++j) add(i, j, i + di, j + dj, kind, stiffness);
+  };
+  each(1, 0, SpringKind::kStructural, k);
+  each(0, 1, SpringKind::kStructural, k);
+  each(1, 1, SpringKind::kShear, shear);
+  // The other diagonal, from (i + 1, j) up to (i, j + 1).
   for (int i = 0; i < g.rows; ++i)
-    for (int j = 0; j < g.cols; ++j) {
-      add(i, j, i + 1, j, SpringKind::kStructural, k);
-      add(i, j, i, j + 1, SpringKind::kStructural, k);
-    }
-  for (int i = 0; i < g.rows; ++i)
-    for (int j = 0; j < g.cols; ++j) {
-      add(i, j, i + 1, j + 1, SpringKind::kShear, shear);
+    for (int j = 0; j < g.cols; ++j)
       if (g.wrap_i || i + 1 < g.rows) add((i + 1) % g.rows, j, i, j + 1, SpringKind::kShear, shear);
-    }
-  for (int i = 0; i < g.rows; ++i)
-    for (int j = 0; j < g.cols; ++j) {
-      add(i, j, i + 2, j, SpringKind::kBending, bend);
-      add(i, j, i, j + 2, SpringKind::kBending, bend);
-    }
+  each(2, 0, SpringKind::kBending, bend);
+  each(0, 2, SpringKind::kBending, bend);
 }
 
 template <int D>

@@ -32,10 +32,13 @@ struct Spring {
 // Four linear springs as the R^4 AVX kernel reads them (see spring_forces.hpp): the ends as byte
 // offsets into an array of Vec<4> (one address computation fewer per load), stiffness and rest
 // length in the lanes of the kernel's sums (springs 0, 2, 1, 3), loaded in one instruction each.
+// A strided group (a grid's springs of one direction: ends a[0] + j and b[0] + j points) is read
+// from a[0] and b[0] alone, its twenty-four other addresses fixed displacements from those two.
 struct alignas(32) SpringGroup4 {
-  double k[4];            // N/m, lane order 0, 2, 1, 3
-  double rest[4];         // m, lane order 0, 2, 1, 3
-  std::int64_t a[4], b[4];  // bytes, spring order
+  double k[4];              // N/m, lane order 0, 2, 1, 3
+  double rest[4];           // m, lane order 0, 2, 1, 3
+  std::int32_t a[4], b[4];  // bytes, spring order
+  std::int32_t strided = 0;  // 1: a[j] = a[0] + j·sizeof(Vec<4>), and the same for b
 };
 
 template <int D>

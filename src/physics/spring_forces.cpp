@@ -4,6 +4,8 @@
 #include "physics/spring_forces.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "core/avx4.hpp"
 
@@ -41,47 +43,64 @@ S4D_AVX_INLINE __m256d at(const char* base, std::int64_t off) {
   return _mm256_loadu_pd(reinterpret_cast<const double*>(base + off));
 }
 
-// No fused multiply-add (FMA is not part of "avx"): every product is rounded as in the portable
-// kernel.
+// Spring j's ends in bytes: read from the group, or (strided) fixed displacements from its first.
+template <bool Strided>
+S4D_AVX_INLINE std::int64_t end_a(const SpringGroup4& s, int j) {
+  return Strided ? std::int64_t{s.a[0]} + j * std::int64_t{sizeof(Vec<4>)} : std::int64_t{s.a[j]};
+}
+template <bool Strided>
+S4D_AVX_INLINE std::int64_t end_b(const SpringGroup4& s, int j) {
+  return Strided ? std::int64_t{s.b[0]} + j * std::int64_t{sizeof(Vec<4>)} : std::int64_t{s.b[j]};
+}
+
+// One group of four; false (nothing done) when ends coincide or are not finite, which the portable
+// kernel skips spring by spring. No fused multiply-add (FMA is not part of "avx"): every product
+// is rounded as in the portable kernel.
+template <bool Strided>
+S4D_AVX_INLINE bool group_forces(const SpringGroup4& s, __m256d kdv, const char* xb, const char* vb,
+                                 char* fb) {
+  __m256d d[4], p[4], q[4];
+  for (int j = 0; j < 4; ++j) {
+    d[j] = _mm256_sub_pd(at(xb, end_b<Strided>(s, j)), at(xb, end_a<Strided>(s, j)));
+    p[j] = _mm256_mul_pd(d[j], d[j]);
+    q[j] = _mm256_mul_pd(_mm256_sub_pd(at(vb, end_b<Strided>(s, j)), at(vb, end_a<Strided>(s, j))), d[j]);
+  }
+  const __m256d len2 = avx4::sums4(p[0], p[1], p[2], p[3]);
+  if (_mm256_movemask_pd(_mm256_cmp_pd(len2, _mm256_set1_pd(1e-24), _CMP_GT_OQ)) != 0xF) return false;
+  const __m256d inv = _mm256_div_pd(_mm256_set1_pd(1.0), _mm256_sqrt_pd(len2));
+  // Lanes in the order of sums4: springs 0, 2, 1, 3 (as k and rest are packed).
+  const __m256d mag =
+      _mm256_mul_pd(_mm256_load_pd(s.k), _mm256_sub_pd(_mm256_mul_pd(len2, inv), _mm256_load_pd(s.rest)));
+  const __m256d damp = _mm256_mul_pd(_mm256_mul_pd(kdv, avx4::sums4(q[0], q[1], q[2], q[3])), inv);
+  const __m256d c = _mm256_mul_pd(_mm256_add_pd(mag, damp), inv);
+  // Each spring's coefficient across a register: lanes 0, 2, 1, 3 hold springs 0, 1, 2, 3.
+  const __m256d lo = _mm256_permute2f128_pd(c, c, 0x00), hi = _mm256_permute2f128_pd(c, c, 0x11);
+  const __m256d cs[4] = {_mm256_permute_pd(lo, 0x0), _mm256_permute_pd(hi, 0x0),
+                         _mm256_permute_pd(lo, 0xF), _mm256_permute_pd(hi, 0xF)};
+  for (int j = 0; j < 4; ++j) {
+    double* fa = reinterpret_cast<double*>(fb + end_a<Strided>(s, j));
+    double* fbj = reinterpret_cast<double*>(fb + end_b<Strided>(s, j));
+    const __m256d f = _mm256_mul_pd(cs[j], d[j]);
+    _mm256_storeu_pd(fa, _mm256_add_pd(_mm256_loadu_pd(fa), f));
+    _mm256_storeu_pd(fbj, _mm256_sub_pd(_mm256_loadu_pd(fbj), f));
+  }
+  return true;
+}
+
 S4D_AVX_TARGET void linear_springs_avx_kernel(std::span<const Spring> springs,
                                               std::span<const SpringGroup4> groups, double kd,
                                               std::span<const Vec<4>> x, std::span<const Vec<4>> v,
                                               std::span<Vec<4>> force) {
-  const __m256d tiny = _mm256_set1_pd(1e-24), one = _mm256_set1_pd(1.0), kdv = _mm256_set1_pd(kd);
+  const __m256d kdv = _mm256_set1_pd(kd);
   const char* xb = reinterpret_cast<const char*>(x.data());
   const char* vb = reinterpret_cast<const char*>(v.data());
   char* fb = reinterpret_cast<char*>(force.data());
   for (std::size_t g = 0; g < groups.size(); ++g) {
     const SpringGroup4& s = groups[g];
-    __m256d d[4], p[4], q[4];
-    for (int j = 0; j < 4; ++j) {
-      d[j] = _mm256_sub_pd(at(xb, s.b[j]), at(xb, s.a[j]));
-      p[j] = _mm256_mul_pd(d[j], d[j]);
-      q[j] = _mm256_mul_pd(_mm256_sub_pd(at(vb, s.b[j]), at(vb, s.a[j])), d[j]);
-    }
-    const __m256d len2 = avx4::sums4(p[0], p[1], p[2], p[3]);
-    if (_mm256_movemask_pd(_mm256_cmp_pd(len2, tiny, _CMP_GT_OQ)) != 0xF) {
-      // Coincident (or non-finite) ends in this group: the portable kernel skips them.
-      spring_forces<4, true>(springs.subspan(4 * g, 4), 0, kd, x, v, force);
-      continue;
-    }
-    const __m256d inv = _mm256_div_pd(one, _mm256_sqrt_pd(len2));
-    // Lanes in the order of sums4: springs 0, 2, 1, 3 (as k and rest are packed).
-    const __m256d mag =
-        _mm256_mul_pd(_mm256_load_pd(s.k), _mm256_sub_pd(_mm256_mul_pd(len2, inv), _mm256_load_pd(s.rest)));
-    const __m256d damp = _mm256_mul_pd(_mm256_mul_pd(kdv, avx4::sums4(q[0], q[1], q[2], q[3])), inv);
-    const __m256d c = _mm256_mul_pd(_mm256_add_pd(mag, damp), inv);
-    // Each spring's coefficient across a register: lanes 0, 2, 1, 3 hold springs 0, 1, 2, 3.
-    const __m256d lo = _mm256_permute2f128_pd(c, c, 0x00), hi = _mm256_permute2f128_pd(c, c, 0x11);
-    const __m256d cs[4] = {_mm256_permute_pd(lo, 0x0), _mm256_permute_pd(hi, 0x0),
-                           _mm256_permute_pd(lo, 0xF), _mm256_permute_pd(hi, 0xF)};
-    for (int j = 0; j < 4; ++j) {
-      double* fa = reinterpret_cast<double*>(fb + s.a[j]);
-      double* fbj = reinterpret_cast<double*>(fb + s.b[j]);
-      const __m256d f = _mm256_mul_pd(cs[j], d[j]);
-      _mm256_storeu_pd(fa, _mm256_add_pd(_mm256_loadu_pd(fa), f));
-      _mm256_storeu_pd(fbj, _mm256_sub_pd(_mm256_loadu_pd(fbj), f));
-    }
+    const bool done = s.strided ? group_forces<true>(s, kdv, xb, vb, fb)
+                                : group_forces<false>(s, kdv, xb, vb, fb);
+    // Coincident (or non-finite) ends in this group: the portable kernel skips them.
+    if (!done) spring_forces<4, true>(springs.subspan(4 * g, 4), 0, kd, x, v, force);
   }
   spring_forces<4, true>(springs.subspan(4 * groups.size()), 0, kd, x, v, force);
 }
@@ -91,15 +110,24 @@ S4D_AVX_TARGET void linear_springs_avx_kernel(std::span<const Spring> springs,
 
 std::vector<SpringGroup4> pack_spring_groups(std::span<const Spring> springs) {
   constexpr int kLane[4] = {0, 2, 1, 3};  // the lane of spring j in the kernel's sums
+  // Byte offsets in 32 bits: vertex indices past 2^26 fall back to the portable kernel.
+  constexpr int kMaxVertex = std::numeric_limits<std::int32_t>::max() / static_cast<int>(sizeof(Vec<4>));
+  for (const Spring& s : springs)
+    if (s.a > kMaxVertex || s.b > kMaxVertex) return {};
   std::vector<SpringGroup4> groups(springs.size() / 4);
-  for (std::size_t g = 0; g < groups.size(); ++g)
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    SpringGroup4& group = groups[g];
+    bool strided = true;
     for (int j = 0; j < 4; ++j) {
       const Spring& s = springs[4 * g + j];
-      groups[g].k[kLane[j]] = s.k;
-      groups[g].rest[kLane[j]] = s.rest;
-      groups[g].a[j] = static_cast<std::int64_t>(s.a) * static_cast<std::int64_t>(sizeof(Vec<4>));
-      groups[g].b[j] = static_cast<std::int64_t>(s.b) * static_cast<std::int64_t>(sizeof(Vec<4>));
+      group.k[kLane[j]] = s.k;
+      group.rest[kLane[j]] = s.rest;
+      group.a[j] = s.a * static_cast<std::int32_t>(sizeof(Vec<4>));
+      group.b[j] = s.b * static_cast<std::int32_t>(sizeof(Vec<4>));
+      strided = strided && s.a == springs[4 * g].a + j && s.b == springs[4 * g].b + j;
     }
+    group.strided = strided ? 1 : 0;
+  }
   return groups;
 }
 

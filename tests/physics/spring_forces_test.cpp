@@ -9,6 +9,9 @@
 #include <limits>
 #include <random>
 
+#include "physics/model.hpp"
+#include "physics/test_worlds.hpp"
+
 namespace s4d {
 namespace {
 
@@ -72,6 +75,43 @@ TEST(SpringForces, AvxKernelEqualsPortableBitForBit) {
     ASSERT_TRUE(spring_detail::linear_springs_avx(s.springs, groups, 0.02, s.x, s.v, wide));
     EXPECT_TRUE(bit_equal(portable, wide)) << "seed " << seed;
   }
+}
+
+// A grid cloth's springs, one direction at a time: most groups are strided (read from their
+// first ends alone), and they give the portable kernel's bits too.
+TEST(SpringForces, AvxKernelEqualsPortableBitForBitOnAGridsStridedGroups) {
+  std::vector<Vec4> probe(1, Vec4::Zero());
+  if (!spring_detail::linear_springs_avx({}, {}, 0, probe, probe, probe)) GTEST_SKIP() << "no AVX here";
+  ModelBuilder<4> b{PhysicsParams<4>{}};
+  b.add_body(test::flat_cloth<4>(13, 0.5));
+  const Model<4> m = b.build();
+  int strided = 0;
+  for (const SpringGroup4& g : m.spring_groups) strided += g.strided;
+  ASSERT_EQ(m.spring_groups.size(), m.springs.size() / 4);
+  EXPECT_GT(strided, static_cast<int>(0.8 * static_cast<double>(m.spring_groups.size())));
+  EXPECT_LT(strided, static_cast<int>(m.spring_groups.size()));  // runs end mid-group too
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Vec4> x = m.initial, v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] += 0.01 * Vec4(u(rng), u(rng), u(rng), u(rng));
+    v[i] = Vec4(u(rng), u(rng), u(rng), u(rng));
+  }
+  std::vector<Vec4> portable(x.size(), Vec4::Constant(0.25)), wide = portable;
+  spring_detail::linear_springs_portable(m.springs, 0.02, x, v, portable);
+  ASSERT_TRUE(spring_detail::linear_springs_avx(m.springs, m.spring_groups, 0.02, x, v, wide));
+  EXPECT_TRUE(bit_equal(portable, wide));
+  // Against the formula as well: the bits above are no use if both are wrong the same way.
+  std::vector<Vec4> reference(x.size(), Vec4::Constant(0.25));
+  for (const Spring& sp : m.springs) {
+    const Vec4 d = x[sp.b] - x[sp.a];
+    const double len = d.norm();
+    const Vec4 f = (sp.k * (len - sp.rest) + 0.02 * (v[sp.b] - v[sp.a]).dot(d / len)) * d / len;
+    reference[sp.a] += f;
+    reference[sp.b] -= f;
+  }
+  for (std::size_t i = 0; i < x.size(); ++i)
+    EXPECT_LT((wide[i] - reference[i]).norm(), 1e-9 * (1 + reference[i].norm())) << i;
 }
 
 }  // namespace
