@@ -35,9 +35,20 @@ CellTopology<K>::CellTopology(const std::vector<Cell<K>>& cells, int nv) : verte
     for (int i = 0; i < K; ++i)
       for (int j = i + 1; j < K; ++j)
         if (c[i] != c[j]) pairs.push_back({std::min(c[i], c[j]), std::max(c[i], c[j])});
-  std::sort(pairs.begin(), pairs.end());
+  // By (v - u, u): a grid's edges then come in long runs of one offset between consecutive
+  // vertices, which the motion kernels read four at a time (see motion_kernels.cpp).
+  std::sort(pairs.begin(), pairs.end(), [](const std::array<int, 2>& p, const std::array<int, 2>& q) {
+    return p[1] - p[0] != q[1] - q[0] ? p[1] - p[0] < q[1] - q[0] : p[0] < q[0];
+  });
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   edges = pairs;
+  strided_edge_groups.assign(edges.size() / 4, 1);
+  for (std::size_t g = 0; g < strided_edge_groups.size(); ++g)
+    for (int j = 1; j < 4; ++j) {
+      const auto& e0 = edges[4 * g];
+      const auto& e = edges[4 * g + j];
+      if (e[0] != e0[0] + j || e[1] != e0[1] + j) strided_edge_groups[g] = 0;
+    }
   pairs.clear();
   for (const auto& e : edges) {
     pairs.push_back({e[0], e[1]});

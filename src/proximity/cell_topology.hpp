@@ -1,6 +1,7 @@
 // The fixed neighbourhood structure of a mesh's cells that self-proximity leans on: its edges,
 // vertex adjacency, the cells around each vertex, and its ring pairs.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "proximity/cells.hpp"
@@ -18,7 +19,10 @@ struct CellTopology {
   CellTopology(const std::vector<Cell<K>>& cells, int nv);
 
   int vertex_count = 0;
-  std::vector<std::array<int, 2>> edges;     // unique, (u, v) with u < v
+  std::vector<std::array<int, 2>> edges;     // unique, (u, v) with u < v, sorted by (v - u, u)
+  // Per whole group of four edges (edges[4g .. 4g + 3]): 1 when they are (u0 + j, v0 + j), a run of
+  // one offset between consecutive vertices (most of a grid's), which kernels read as such.
+  std::vector<std::uint8_t> strided_edge_groups;
   std::vector<int> neighbour_offset, neighbours;  // CSR: each vertex's neighbours along edges
   std::vector<int> around_offset, around;    // CSR: the cells holding each vertex
   std::vector<int> ring_offset, ring;        // CSR by cell a: its ring partners b > a, sorted

@@ -175,27 +175,72 @@ double motion_since_snapshot(std::span<const Vec<D>> x, const Cell<K>& a, const 
 
 namespace {
 #if S4D_X86
+// a[first .. first + 3] = max(a[...], m) lane by lane; a NaN in m leaves a (as std::max(a, m)).
+S4D_AVX_INLINE void raise4(double* a, int first, __m256d m) {
+  _mm256_storeu_pd(a + first, _mm256_max_pd(m, _mm256_loadu_pd(a + first)));
+}
+
 // The first pass of the ring bounds for whole groups of four edges: their squared changes in
-// registers (the portable bits, see avx4::sums4), then the scalar maxima. Returns how many edges
-// it did (the portable loop does the rest).
+// registers (the portable bits, see avx4::sums4), then the maxima, four vertices at once for a
+// strided group (max is exact: any order gives the same bits). Returns how many edges it did
+// (the portable loop does the rest).
 S4D_AVX_TARGET std::size_t edge_maxima_avx(const Vec<4>* u, const std::array<int, 2>* edges, std::size_t ne,
-                                           double* own) {
+                                           const std::uint8_t* strided, std::size_t groups, double* own) {
   using avx4::load;
   std::size_t i = 0;
   for (; i + 4 <= ne; i += 4) {
+    const std::array<int, 2>* e = edges + i;
     __m256d sq[4];
+    if (i / 4 < groups && strided[i / 4]) {
+      const Vec<4>* ua = u + e[0][0];
+      const Vec<4>* ub = u + e[0][1];
+      for (int j = 0; j < 4; ++j) {
+        const __m256d d = _mm256_sub_pd(load(ua[j]), load(ub[j]));
+        sq[j] = _mm256_mul_pd(d, d);
+      }
+      const __m256d d2 = avx4::sums4(sq[0], sq[1], sq[2], sq[3]);  // edges 0, 2, 1, 3
+      const __m128d lo = _mm256_castpd256_pd128(d2), hi = _mm256_extractf128_pd(d2, 1);
+      const __m256d in_order = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_unpacklo_pd(lo, hi)),
+                                                    _mm_unpackhi_pd(lo, hi), 1);
+      raise4(own, e[0][0], in_order);
+      raise4(own, e[0][1], in_order);  // after the first: the two may overlap
+      continue;
+    }
     for (int j = 0; j < 4; ++j) {
-      const __m256d d = _mm256_sub_pd(load(u[edges[i + j][0]]), load(u[edges[i + j][1]]));
+      const __m256d d = _mm256_sub_pd(load(u[e[j][0]]), load(u[e[j][1]]));
       sq[j] = _mm256_mul_pd(d, d);
     }
-    alignas(32) double d2[4];
-    _mm256_store_pd(d2, avx4::sums4(sq[0], sq[1], sq[2], sq[3]));
+    const __m256d d2 = avx4::sums4(sq[0], sq[1], sq[2], sq[3]);  // edges 0, 2, 1, 3
+    alignas(32) double d2s[4];
+    _mm256_store_pd(d2s, d2);
     constexpr int kLane[4] = {0, 2, 1, 3};
     for (int j = 0; j < 4; ++j) {
-      const auto& e = edges[i + j];
-      const double d = d2[kLane[j]];
-      own[e[0]] = std::max(own[e[0]], d);
-      own[e[1]] = std::max(own[e[1]], d);
+      const double d = d2s[kLane[j]];
+      own[e[j][0]] = std::max(own[e[j][0]], d);
+      own[e[j][1]] = std::max(own[e[j][1]], d);
+    }
+  }
+  return i;
+}
+
+// around[v] = max(around[v], own[w]) for both ends of whole groups of four edges, four vertices
+// at once for a strided group. Returns how many edges it did.
+S4D_AVX_TARGET std::size_t neighbour_maxima_avx(const double* own, const std::array<int, 2>* edges,
+                                                std::size_t ne, const std::uint8_t* strided,
+                                                std::size_t groups, double* around) {
+  std::size_t i = 0;
+  for (; i + 4 <= ne; i += 4) {
+    const std::array<int, 2>* e = edges + i;
+    if (i / 4 < groups && strided[i / 4]) {
+      const int a = e[0][0], b = e[0][1];
+      raise4(around, a, _mm256_loadu_pd(own + b));
+      raise4(around, b, _mm256_loadu_pd(own + a));
+      continue;
+    }
+    for (int j = 0; j < 4; ++j) {
+      const double o0 = own[e[j][0]], o1 = own[e[j][1]];
+      around[e[j][0]] = std::max(around[e[j][0]], o1);
+      around[e[j][1]] = std::max(around[e[j][1]], o0);
     }
   }
   return i;
@@ -213,11 +258,13 @@ S4D_AVX_TARGET int square_roots_avx(double* a, int n) {
 }  // namespace
 
 template <int D>
-void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges, double* own) {
+void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges,
+                           std::span<const std::uint8_t> strided, double* own) {
   std::size_t done = 0;
 #if S4D_X86
   if constexpr (D == 4)
-    if (cpu::kHasAvx) done = edge_maxima_avx(u, edges.data(), edges.size(), own);
+    if (cpu::kHasAvx)
+      done = edge_maxima_avx(u, edges.data(), edges.size(), strided.data(), strided.size(), own);
 #endif
   for (std::size_t i = done; i < edges.size(); ++i) {
     const auto& e = edges[i];
@@ -243,10 +290,17 @@ void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<
   const int nv = topo.vertex_count, nc = static_cast<int>(cells.size());
   own_v.assign(nv, 0.0);
   double* own = own_v.data();  // per vertex: the largest |u_p - u_q|² of its edges
-  raise_to_edge_changes<D>(u, topo.edges, own);
+  raise_to_edge_changes<D>(u, topo.edges, topo.strided_edge_groups, own);
   around_v.assign(own_v.begin(), own_v.end());
   double* around = around_v.data();  // the same over the vertex and its neighbours
-  for (const auto& e : topo.edges) {
+  std::size_t done = 0;
+#if S4D_X86
+  if (cpu::kHasAvx)
+    done = neighbour_maxima_avx(own, topo.edges.data(), topo.edges.size(),
+                                topo.strided_edge_groups.data(), topo.strided_edge_groups.size(), around);
+#endif
+  for (std::size_t i = done; i < topo.edges.size(); ++i) {
+    const auto& e = topo.edges[i];
     const double o0 = own[e[0]], o1 = own[e[1]];
     around[e[0]] = std::max(around[e[0]], o1);
     around[e[1]] = std::max(around[e[1]], o0);
@@ -281,7 +335,7 @@ void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<
   template double centred_difference_portable<D>(std::span<const Vec<D>>, std::span<const Vec<D>>, \
                                                  std::vector<Vec<D>>&);                            \
   template void raise_to_edge_changes<D>(const Vec<D>*, std::span<const std::array<int, 2>>,       \
-                                         double*);                                                 \
+                                         std::span<const std::uint8_t>, double*);                  \
   S4D_INSTANTIATE_CELLS(D, 2)                                                                      \
   S4D_INSTANTIATE_CELLS(D, 3)
 S4D_INSTANTIATE(2)

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -41,9 +42,11 @@ template <int D, int K>
 double motion_since_snapshot(std::span<const Vec<D>> x, const Cell<K>& a, const Cell<K>& b,
                              const std::array<Vec<D>, 2 * K>& x0);
 
-// own[v] = max(own[v], |u_p - u_q|²) over the edges (p, q) at each vertex v.
+// own[v] = max(own[v], |u_p - u_q|²) over the edges (p, q) at each vertex v. `strided` marks the
+// whole groups of four edges that are runs (CellTopology::strided_edge_groups; may be empty).
 template <int D>
-void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges, double* own);
+void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> edges,
+                           std::span<const std::uint8_t> strided, double* own);
 // a[v] = sqrt(a[v]) for v < n.
 void square_roots(double* a, int n);
 
