@@ -49,6 +49,11 @@ CellTopology<K>::CellTopology(const std::vector<Cell<K>>& cells, int nv) : verte
       const auto& e = edges[4 * g + j];
       if (e[0] != e0[0] + j || e[1] != e0[1] + j) strided_edge_groups[g] = 0;
     }
+  strided_cell_groups.assign(cells.size() / 8, 1);
+  for (std::size_t g = 0; g < strided_cell_groups.size(); ++g)
+    for (int k = 2; k < 8; ++k)
+      for (int i = 0; i < K; ++i)
+        if (cells[8 * g + k][i] != cells[8 * g + k % 2][i] + k / 2) strided_cell_groups[g] = 0;
   pairs.clear();
   for (const auto& e : edges) {
     pairs.push_back({e[0], e[1]});

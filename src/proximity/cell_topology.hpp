@@ -23,6 +23,9 @@ struct CellTopology {
   // Per whole group of four edges (edges[4g .. 4g + 3]): 1 when they are (u0 + j, v0 + j), a run of
   // one offset between consecutive vertices (most of a grid's), which kernels read as such.
   std::vector<std::uint8_t> strided_edge_groups;
+  // Per whole group of eight cells (cells[8g .. 8g + 7]): 1 when cells 8g + p + 2m are cell 8g + p
+  // with every vertex index + m (p = 0, 1; m < 4): a grid's two triangles a quad, along a row.
+  std::vector<std::uint8_t> strided_cell_groups;
   std::vector<int> neighbour_offset, neighbours;  // CSR: each vertex's neighbours along edges
   std::vector<int> around_offset, around;    // CSR: the cells holding each vertex
   std::vector<int> ring_offset, ring;        // CSR by cell a: its ring partners b > a, sorted

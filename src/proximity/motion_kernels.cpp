@@ -246,6 +246,30 @@ S4D_AVX_TARGET std::size_t neighbour_maxima_avx(const double* own, const std::ar
   return i;
 }
 
+// ring[k] = 2 B + C for the strided groups of eight triangles (CellTopology::strided_cell_groups):
+// each parity's four cells from three loads of four consecutive vertices, then interleaved.
+S4D_AVX_TARGET void strided_cell_bounds_avx(const Cell<3>* c, const std::uint8_t* strided,
+                                            std::size_t groups, const double* own,
+                                            const double* around, double* ring) {
+  const __m256d two = _mm256_set1_pd(2.0);
+  for (std::size_t g = 0; g < groups; ++g) {
+    if (!strided[g]) continue;
+    __m256d r[2];
+    for (int p = 0; p < 2; ++p) {
+      const Cell<3>& first = c[8 * g + p];
+      __m256d b = _mm256_loadu_pd(own + first[0]), cc = _mm256_loadu_pd(around + first[0]);
+      for (int i = 1; i < 3; ++i) {
+        b = _mm256_max_pd(b, _mm256_loadu_pd(own + first[i]));
+        cc = _mm256_max_pd(cc, _mm256_loadu_pd(around + first[i]));
+      }
+      r[p] = _mm256_add_pd(_mm256_mul_pd(two, b), cc);  // cells 8g + p + 2m in lane m
+    }
+    const __m256d lo = _mm256_unpacklo_pd(r[0], r[1]), hi = _mm256_unpackhi_pd(r[0], r[1]);
+    _mm256_storeu_pd(ring + 8 * g, _mm256_permute2f128_pd(lo, hi, 0x20));
+    _mm256_storeu_pd(ring + 8 * g + 4, _mm256_permute2f128_pd(lo, hi, 0x31));
+  }
+}
+
 // sqrt(a[v]) in place for whole groups of four (sqrt rounds correctly either way: the same
 // bits); returns how many it did.
 S4D_AVX_TARGET int square_roots_avx(double* a, int n) {
@@ -311,7 +335,20 @@ void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<
   ring_v.resize(nc);
   double* ring = ring_v.data();
   const Cell<K>* c = cells.data();
+  const std::vector<std::uint8_t>& strided = topo.strided_cell_groups;
+  bool vector_groups = false;
+#if S4D_X86
+  if constexpr (K == 3)
+    if (cpu::kHasAvx && strided.size() == static_cast<std::size_t>(nc) / 8) {
+      strided_cell_bounds_avx(c, strided.data(), strided.size(), own, around, ring);
+      vector_groups = true;
+    }
+#endif
   for (int k = 0; k < nc; ++k) {
+    if (vector_groups && static_cast<std::size_t>(k / 8) < strided.size() && strided[k / 8]) {
+      k += 7;  // done above
+      continue;
+    }
     double b = own[c[k][0]], cc = around[c[k][0]];
     for (int i = 1; i < K; ++i) {
       b = std::max(b, own[c[k][i]]);

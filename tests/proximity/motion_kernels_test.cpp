@@ -59,7 +59,8 @@ TEST(MotionKernels, RingBoundHoldsForEveryRingPair) {
 
 // Every cell's bound is its definition, 2 B + C, to the bit: B the largest |u_p - u_q| over the
 // edges at its vertices, C the same at their neighbours too. On grids most groups of four edges
-// are runs read four vertices at once; a NaN displacement must not hide the others' maxima.
+// and of eight triangles are runs read four vertices at once; a NaN displacement must not hide
+// the others' maxima.
 TEST(MotionKernels, RingBoundIsItsDefinitionBitForBit) {
   for (int n : {7, 16}) {
     const auto cells = grid_cells(n);
@@ -67,6 +68,9 @@ TEST(MotionKernels, RingBoundIsItsDefinitionBitForBit) {
     int strided = 0;
     for (std::uint8_t g : topo.strided_edge_groups) strided += g;
     EXPECT_GT(strided, static_cast<int>(topo.edges.size() / 8)) << "a grid's edges come in runs";
+    int strided_cells = 0;
+    for (std::uint8_t g : topo.strided_cell_groups) strided_cells += g;
+    EXPECT_GT(strided_cells, static_cast<int>(cells.size() / 16)) << "and so do its triangles";
     std::mt19937 rng(static_cast<unsigned>(n));
     std::normal_distribution<double> normal(0, 1);
     for (int trial = 0; trial < 10; ++trial) {
