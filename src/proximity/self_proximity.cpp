@@ -339,8 +339,9 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
   if (!(measured && radius_ - 2 * rho_ >= delta)) build_list(x, delta, measured);
   ClosestPoints<D> cp;
   bool within = false;
+  const double listed_limit = (delta + 2 * rho_) * kLimitRoundUp;  // gap - 2 rho > delta: apart
   for (Tracked& p : listed_) {
-    if (p.gap - 2 * rho_ > delta) continue;
+    if (p.gap > listed_limit) continue;
     const double m = relative_motion(p.a, p.b);
     if (p.gap - m > delta) continue;
     p.gap = std::max(p.gap, test_pair(p.a, p.b, p.hints, x, delta, within, cp) - m);
@@ -365,12 +366,12 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       ++i;
     }
     for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-      const double odo = ring_odo_[a];
-      if (ring_min_[a] - odo > delta) continue;
+      const double limit = (delta + ring_odo_[a]) * kLimitRoundUp;  // gap - odo > delta: apart
+      if (ring_min_[a] > limit) continue;
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
         // Never in the fringe (+inf).
-        if (ring_gap_[k] - odo <= delta && examine_ring(k, a, topo_.ring[k], x, delta, cp))
+        if (!(ring_gap_[k] > limit) && examine_ring(k, a, topo_.ring[k], x, delta, cp))
           out.push_back({a, topo_.ring[k], cp});
         lowest = std::min(lowest, ring_gap_[k]);
       }

@@ -136,6 +136,9 @@ class SelfProximity {
       ring_valid = false;
     }
   };
+  // th + odo + reach rounded up: far more than the few ulps the sums can lose, far less than any
+  // slack that matters.
+  static constexpr double kLimitRoundUp = 1 + 1e-12;
   // Per cell a, a bound of M_ab over all its ring partners b (prox_detail::ring_motion_bounds).
   const double* ring_bounds(MotionBounds& m) {
     if (!m.ring_valid) compute_ring_bounds(m);
@@ -349,8 +352,9 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     e.lower = lower;
   }
   const double coarse = 2 * (rho_ + step_motion_.rho);
+  const double listed_limit = (th + coarse) * kLimitRoundUp;  // gap - coarse > th: apart
   for (Tracked& p : listed_) {
-    if (p.gap - coarse > th) continue;
+    if (p.gap > listed_limit) continue;
     const double m0 = relative_motion(p.a, p.b);
     double lower = p.gap - m0;
     if (lower - 2 * step_motion_.rho > th) continue;  // the step's own motion is not needed
@@ -378,7 +382,11 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   for (int a = 0; a < nc; ++a) {
     const double odo = odos[a];
     double reach = ring ? std::min(step_coarse, ring[a]) : step_coarse;
-    if (mins[a] - odo - reach > th) {
+    // A pair may come within th unless gap - odo - reach > th: tested as gap > limit, one
+    // comparison a pair, with the limit rounded up far past any rounding of the subtractions
+    // (a pair at the limit itself is only looked at, never wrongly left out).
+    double limit = (th + odo + reach) * kLimitRoundUp;
+    if (mins[a] > limit) {
       run_odometer(odos, mins, a, reach);
       continue;
     }
@@ -387,7 +395,8 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     if (!ring) {
       ring = ring_bounds(step_motion_);
       reach = std::min(step_coarse, ring[a]);
-      if (mins[a] - odo - reach > th) {
+      limit = (th + odo + reach) * kLimitRoundUp;
+      if (mins[a] > limit) {
         run_odometer(odos, mins, a, reach);
         continue;
       }
@@ -395,7 +404,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     double lowest = std::numeric_limits<double>::infinity();
     for (int k = ring_offset[a], end = ring_offset[a + 1]; k < end; ++k) {
       double gap = gaps[k];
-      if (gap - odo - reach <= th) {
+      if (!(gap > limit)) {
         const int b = partner[k];
         // Its cached axis first, even when its own motion would settle it: the axis usually
         // proves the pair far enough apart for many steps. Most are settled against the cell's
