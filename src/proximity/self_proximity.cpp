@@ -118,7 +118,7 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
   for (const Tracked& p : unsorted_) ++bucket_[p.a + 1];
   for (std::size_t c = 1; c < bucket_.size(); ++c) bucket_[c] += bucket_[c - 1];
   // The old list (sorted too) hands its bounds and hints on to the pairs that stay, converted to
-  // the new reference: a bound loses M_ab of the displacements measured now (disp_).
+  // the new reference: a bound loses 2 rho, which holds every M_ab of the displacements since.
   listed_.swap(previous_);
   if (!measured) previous_.clear();
   if (listed_.capacity() < unsorted_.size()) listed_.reserve(unsorted_.capacity());
@@ -135,10 +135,11 @@ void SelfProximity<D, K>::build_list(std::span<const Vec<D>> x, double margin, b
       while (old != previous_.cend() && (old->a < p.a || (old->a == p.a && old->b < p.b))) ++old;
       if (old == previous_.cend() || old->a != p.a || old->b != p.b) continue;
       p.hints = old->hints;
-      if (old->gap - 2 * rho_ > p.gap)
-        p.gap = old->gap - 2 * rho_;
-      else if (old->gap > p.gap)
-        p.gap = std::max(p.gap, old->gap - relative_motion(p.a, p.b));
+      // The coarse carry-over only: the pair's own motion (relative_motion) would keep more of
+      // the old bound, but costs more than the re-proofs it saves (measured, instructions: physics
+      // step 4.831 M with it, 4.775 M without; stepping pairs 3.032 M / 2.980 M; impact 2.963 M
+      // / 2.911 M).
+      p.gap = std::max(p.gap, old->gap - 2 * rho_);
     }
     begin = end;
   }
