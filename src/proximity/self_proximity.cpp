@@ -340,7 +340,7 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
   if (!(measured && radius_ - 2 * rho_ >= delta)) build_list(x, delta, measured);
   ClosestPoints<D> cp;
   bool within = false;
-  const double listed_limit = (delta + 2 * rho_) * kLimitRoundUp;  // gap - 2 rho > delta: apart
+  const double listed_limit = apart_limit(delta, 2 * rho_);
   for (Tracked& p : listed_) {
     if (p.gap > listed_limit) continue;
     const double m = relative_motion(p.a, p.b);
@@ -367,7 +367,7 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       ++i;
     }
     for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
-      const double limit = (delta + ring_odo_[a]) * kLimitRoundUp;  // gap - odo > delta: apart
+      const double limit = apart_limit(delta, ring_odo_[a]);
       if (ring_min_[a] > limit) continue;
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {

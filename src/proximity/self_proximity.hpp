@@ -136,9 +136,13 @@ class SelfProximity {
       ring_valid = false;
     }
   };
-  // th + odo + reach rounded up: far more than the few ulps the sums can lose, far less than any
-  // slack that matters.
-  static constexpr double kLimitRoundUp = 1 + 1e-12;
+  // A pair whose bound is gap - slack is apart beyond `threshold` when gap > this limit: one
+  // comparison a pair instead of a subtraction, the sum rounded up by 1e-12 relative, far more
+  // than the few ulps the subtractions could lose and far less than any slack that matters (a
+  // pair at the limit is looked at, never left out). slack, threshold >= 0.
+  static double apart_limit(double threshold, double slack) {
+    return (threshold + slack) * (1 + 1e-12);
+  }
   // Per cell a, a bound of M_ab over all its ring partners b (prox_detail::ring_motion_bounds).
   const double* ring_bounds(MotionBounds& m) {
     if (!m.ring_valid) compute_ring_bounds(m);
@@ -352,7 +356,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     e.lower = lower;
   }
   const double coarse = 2 * (rho_ + step_motion_.rho);
-  const double listed_limit = (th + coarse) * kLimitRoundUp;  // gap - coarse > th: apart
+  const double listed_limit = apart_limit(th, coarse);
   for (Tracked& p : listed_) {
     if (p.gap > listed_limit) continue;
     const double m0 = relative_motion(p.a, p.b);
@@ -382,10 +386,8 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   for (int a = 0; a < nc; ++a) {
     const double odo = odos[a];
     double reach = ring ? std::min(step_coarse, ring[a]) : step_coarse;
-    // A pair may come within th unless gap - odo - reach > th: tested as gap > limit, one
-    // comparison a pair, with the limit rounded up far past any rounding of the subtractions
-    // (a pair at the limit itself is only looked at, never wrongly left out).
-    double limit = (th + odo + reach) * kLimitRoundUp;
+    // A pair may come within th unless gap - odo - reach > th.
+    double limit = apart_limit(th, odo + reach);
     if (mins[a] > limit) {
       run_odometer(odos, mins, a, reach);
       continue;
@@ -395,7 +397,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     if (!ring) {
       ring = ring_bounds(step_motion_);
       reach = std::min(step_coarse, ring[a]);
-      limit = (th + odo + reach) * kLimitRoundUp;
+      limit = apart_limit(th, odo + reach);
       if (mins[a] > limit) {
         run_odometer(odos, mins, a, reach);
         continue;
