@@ -80,9 +80,9 @@ class World {
   double min_separation(double search) const;
 
  private:
-  // Saves x into x0, then substeps of forces and integration, then the paper's clamp of each vertex's motion to
-  // max_step_motion (δ by default). Returns the motions clamped, or -1 when the result is
-  // non-finite or too fast.
+  // Saves x into x0, then substeps of forces and integration, then the paper's clamp of each
+  // vertex's motion to max_step_motion (δ by default). Returns the motions clamped, or -1 when the
+  // result is non-finite or too fast.
   int integrate(double dt);
 
   Model<D> model_;

@@ -174,6 +174,13 @@ double motion_since_snapshot(std::span<const Vec<D>> x, const Cell<K>& a, const 
 // [SECTION] Edge changes of the ring bounds
 
 namespace {
+// a[p] = max(a[p], to_p) and a[q] = max(a[q], to_q) for an edge (p, q): the maxima's scalar step,
+// a NaN value dropped (std::max keeps a).
+inline void raise_ends(double* a, const std::array<int, 2>& e, double to_p, double to_q) {
+  a[e[0]] = std::max(a[e[0]], to_p);
+  a[e[1]] = std::max(a[e[1]], to_q);
+}
+
 #if S4D_X86
 // a[first .. first + 3] = max(a[...], m) lane by lane; a NaN in m leaves a (as std::max(a, m)).
 S4D_AVX_INLINE void raise4(double* a, int first, __m256d m) {
@@ -216,8 +223,7 @@ S4D_AVX_TARGET std::size_t edge_maxima_avx(const Vec<4>* u, const std::array<int
     constexpr int kLane[4] = {0, 2, 1, 3};
     for (int j = 0; j < 4; ++j) {
       const double d = d2s[kLane[j]];
-      own[e[j][0]] = std::max(own[e[j][0]], d);
-      own[e[j][1]] = std::max(own[e[j][1]], d);
+      raise_ends(own, e[j], d, d);
     }
   }
   return i;
@@ -238,9 +244,7 @@ S4D_AVX_TARGET std::size_t neighbour_maxima_avx(const double* own, const std::ar
       continue;
     }
     for (int j = 0; j < 4; ++j) {
-      const double o0 = own[e[j][0]], o1 = own[e[j][1]];
-      around[e[j][0]] = std::max(around[e[j][0]], o1);
-      around[e[j][1]] = std::max(around[e[j][1]], o0);
+      raise_ends(around, e[j], own[e[j][1]], own[e[j][0]]);
     }
   }
   return i;
@@ -293,8 +297,7 @@ void raise_to_edge_changes(const Vec<D>* u, std::span<const std::array<int, 2>> 
   for (std::size_t i = done; i < edges.size(); ++i) {
     const auto& e = edges[i];
     const double d = (u[e[0]] - u[e[1]]).squaredNorm();
-    own[e[0]] = std::max(own[e[0]], d);
-    own[e[1]] = std::max(own[e[1]], d);
+    raise_ends(own, e, d, d);
   }
 }
 
@@ -325,9 +328,7 @@ void ring_motion_bounds(const Vec<D>* u, const CellTopology<K>& topo, std::span<
 #endif
   for (std::size_t i = done; i < topo.edges.size(); ++i) {
     const auto& e = topo.edges[i];
-    const double o0 = own[e[0]], o1 = own[e[1]];
-    around[e[0]] = std::max(around[e[0]], o1);
-    around[e[1]] = std::max(around[e[1]], o0);
+    raise_ends(around, e, own[e[1]], own[e[0]]);
   }
   // Roots once a vertex (monotone: the same as once a cell).
   square_roots(own, nv);
