@@ -400,14 +400,18 @@ template <int D, int K>
 bool SelfProximity<D, K>::step_candidate_past_axis(int a, int b, Hints& h,
                                                    std::span<const Vec<D>> x0, double thickness,
                                                    double s, double& lower) {
-  if (!(lower - s > thickness)) {
-    Vec<D> best = Vec<D>::Zero();
-    lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x0, cells_[a]),
-                                                          gather<D, K>(x0, cells_[b]),
-                                                          2 * (thickness + s), &best));
-    store_axis<D>(best, h.axis);
-  }
+  if (!(lower - s > thickness)) lower = std::max(lower, axes_bound(a, b, h, x0, 2 * (thickness + s)));
   return !(lower - s > thickness);  // NaN: a candidate
+}
+
+template <int D, int K>
+double SelfProximity<D, K>::axes_bound(int a, int b, Hints& h, std::span<const Vec<D>> x,
+                                       double enough) {
+  Vec<D> best = Vec<D>::Zero();
+  const double lower = distance_lower_bound<D, K, K>(gather<D, K>(x, cells_[a]),
+                                                     gather<D, K>(x, cells_[b]), enough, &best);
+  store_axis<D>(best, h.axis);
+  return lower;
 }
 
 template <int D, int K>
