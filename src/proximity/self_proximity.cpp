@@ -272,13 +272,8 @@ bool SelfProximity<D, K>::examine_ring(int k, int a, int b, std::span<const Vec<
   ++bounds_tightened_;
   Hints& h = ring_hints_[k];
   double lower = axis_bound(a, b, h.axis, x);
-  if (!(lower > kPromoteMargins * delta)) {
-    Vec<D> best = Vec<D>::Zero();
-    lower = std::max(lower, distance_lower_bound<D, K, K>(gather<D, K>(x, cells_[a]),
-                                                          gather<D, K>(x, cells_[b]),
-                                                          kEvictMargins * delta, &best));
-    store_axis<D>(best, h.axis);
-  }
+  if (!(lower > kPromoteMargins * delta))
+    lower = std::max(lower, axes_bound(a, b, h, x, kEvictMargins * delta));
   if (lower > kPromoteMargins * delta) {
     ring_gap_[k] = std::max(ring_gap_[k], lower + ring_odo_[a]);
     return false;
