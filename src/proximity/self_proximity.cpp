@@ -361,9 +361,13 @@ void SelfProximity<D, K>::pairs_within(std::span<const Vec<D>> x, double delta,
       }
       ++i;
     }
+    due_.clear();
     for (int a = 0; a < static_cast<int>(cells_.size()); ++a) {
+      if (ring_min_[a] > apart_limit(delta, ring_odo_[a])) continue;
+      mark_due(a);
+    }
+    for (const int a : due_) {
       const double limit = apart_limit(delta, ring_odo_[a]);
-      if (ring_min_[a] > limit) continue;
       double lowest = std::numeric_limits<double>::infinity();
       for (int k = topo_.ring_offset[a]; k < topo_.ring_offset[a + 1]; ++k) {
         // Never in the fringe (+inf).

@@ -171,6 +171,23 @@ class SelfProximity {
     mins[a] -= odo;
     odo = 0;
   }
+  // Lists cell a for the ring pass's second loop and fetches its ring pairs' bounds and hints
+  // meanwhile: the due cells are far apart, and loaded only when a pair is looked at, each miss
+  // stalled the pass (measured, ABBA series of 16 runs: stepping impact 0.69-0.77 -> 0.53-0.61 ms,
+  // stepping pairs 0.40-0.50 -> 0.37-0.41 ms, physics step 0.46-0.53 -> 0.45-0.47 ms).
+  void mark_due(int a) {
+    due_.push_back(a);
+    const int begin = topo_.ring_offset[a], end = topo_.ring_offset[a + 1];
+    prefetch_range(ring_gap_.data() + begin, ring_gap_.data() + end);
+    prefetch_range(ring_hints_.data() + begin, ring_hints_.data() + end);
+  }
+  template <class T>
+  static void prefetch_range(const T* first, const T* last) {
+    if (first == last) return;
+    const char* end = reinterpret_cast<const char*>(last) - 1;
+    for (const char* p = reinterpret_cast<const char*>(first); p < end; p += 64) __builtin_prefetch(p);
+    __builtin_prefetch(end);
+  }
   // `measured`: disp_ holds the displacements from the last build to x (measure(x) succeeded),
   // so the bounds carry over to the new reference; otherwise they restart from boxes.
   void build_list(std::span<const Vec<D>> x, double margin, bool measured);
@@ -284,6 +301,7 @@ class SelfProximity {
   std::vector<double> ring_gap_;   // G; +inf while in the fringe
   std::vector<int> ring_fringe_;   // its entry in fringe_, or -1
   std::vector<Hints> ring_hints_;
+  std::vector<int> due_;           // scratch of the ring pass: the cells with a pair due
   std::vector<double> ring_min_;   // nc: smallest G of the pairs (a, ·)
   std::vector<double> ring_odo_;   // nc: S_a
   std::vector<Vec<D>> x_ring_;     // where the odometer last ran to (empty: never)
@@ -396,6 +414,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
   double* odos = ring_odo_.data();
   double* mins = ring_min_.data();
   double* gaps = ring_gap_.data();  // +inf in the fringe
+  due_.clear();
   for (int a = 0; a < nc; ++a) {
     const double odo = odos[a];
     double reach = ring ? std::min(step_coarse, ring[a]) : step_coarse;
@@ -416,6 +435,12 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
         continue;
       }
     }
+    mark_due(a);
+  }
+  for (const int a : due_) {
+    const double odo = odos[a];
+    const double reach = std::min(step_coarse, ring[a]);
+    const double limit = apart_limit(th, odo + reach);
     double lowest = std::numeric_limits<double>::infinity();
     for (int k = ring_offset[a], end = ring_offset[a + 1]; k < end; ++k) {
       double gap = gaps[k];
