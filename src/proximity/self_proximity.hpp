@@ -171,10 +171,11 @@ class SelfProximity {
     mins[a] -= odo;
     odo = 0;
   }
-  // Lists cell a for the ring pass's second loop and fetches its ring pairs' bounds, partners and
-  // hints meanwhile: the due cells are far apart, and loaded only when a pair is looked at, each miss
-  // stalled the pass (measured, ABBA series of 16 runs: stepping impact 0.69-0.77 -> 0.53-0.61 ms,
-  // stepping pairs 0.40-0.50 -> 0.37-0.41 ms, physics step 0.46-0.53 -> 0.45-0.47 ms).
+  // Lists cell a for the ring pass's second loop and starts fetching its ring pairs' bounds,
+  // partners and hints. The ring's data (1.8 MB of hints at 64²) outgrows the cache and the due
+  // cells are far apart, so a pass that loaded them pair by pair stalled on every miss (measured
+  // with the bounds and hints fetched, ABBA series of 16 runs: stepping impact 0.69-0.77 ->
+  // 0.53-0.61 ms, stepping pairs 0.40-0.50 -> 0.37-0.41 ms, physics step 0.46-0.53 -> 0.45-0.47 ms).
   void mark_due(int a) {
     due_.push_back(a);
     const int begin = topo_.ring_offset[a], end = topo_.ring_offset[a + 1];
@@ -438,6 +439,7 @@ void SelfProximity<D, K>::step_candidates(std::span<const Vec<D>> x0, std::span<
     }
     mark_due(a);
   }
+  // The first due cell made the loop above work out the ring bounds: `ring` is set here.
   for (const int a : due_) {
     const double odo = odos[a];
     const double reach = std::min(step_coarse, ring[a]);
