@@ -29,7 +29,8 @@ nlohmann::json shadow_json(const ShadowIntersections& s) {
           {"total_length", s.total_length},
           {"shadow_only_curves", s.shadow_only_curves},
           {"true_curves", s.true_curves},
-          {"coplanar_pairs", s.coplanar_pairs}};
+          {"coplanar_pairs", s.coplanar_pairs},
+          {"generic_view", s.coplanar_pairs == 0}};
 }
 
 std::string shadow_text(const ShadowIntersections& s) {
@@ -38,6 +39,12 @@ std::string shadow_text(const ShadowIntersections& s) {
     << std::setprecision(6) << s.total_length << "; " << s.shadow_only_curves << " shadow-only, "
     << s.true_curves << " true";
   if (s.coplanar_pairs > 0) o << "; " << s.coplanar_pairs << " coplanar overlaps (non-generic view)";
+  o << "\n";
+  // Where sheets of the shadow overlap in area (the Clifford torus or the spun trefoil seen
+  // straight along w), the curves are only where those areas happen to cut: say what to do.
+  if (s.coplanar_pairs > 0)
+    o << "  note: the view is not generic: parts of the shadow overlap in area, where no curve is\n"
+         "  defined; turn it (e.g. --rotate xw=30,yw=20) for curves that mean something\n";
   return o.str();
 }
 
@@ -76,7 +83,7 @@ std::size_t run_check(const CheckOptions& opt) {
                   << s.triangles.size() << " triangles)\n"
                   << "  true 4D self-intersections: " << self.pairs.size() << " triangle pair(s), "
                   << self.points.size() << " distinct point(s)\n"
-                  << "  shadow intersection curves: " << shadow_text(shadow) << "\n";
+                  << "  shadow intersection curves: " << shadow_text(shadow);
       surfaces.emplace_back(obj.name, std::move(s));
     } else {
       // Curves: segments of the same curve that touch, and crossings of the 2D/3D shadow.
@@ -144,7 +151,7 @@ std::size_t run_check(const CheckOptions& opt) {
         std::cout << "objects '" << na << "' and '" << nb << "'\n"
                   << "  true 4D intersections: " << meet.pairs.size() << " triangle pair(s), "
                   << meet.points.size() << " distinct point(s)\n"
-                  << "  shadow intersection curves: " << shadow_text(shadow) << "\n";
+                  << "  shadow intersection curves: " << shadow_text(shadow);
     }
   out["true_intersection_points"] = true_points;
   out["embedded"] = true_points == 0;
