@@ -48,7 +48,8 @@ int render_at_60fps(HapticLoop& loop, int cloth_n, const std::atomic<bool>& stop
       auto& s = std::get<Surface<4>>(scene.objects[0].shape);
       if (snap.point_dimension == 4 && snap.points.size() == 4 * s.vertices.size())
         for (std::size_t i = 0; i < s.vertices.size(); ++i)
-          s.vertices[i] = Vec4(snap.points[4 * i], snap.points[4 * i + 1], snap.points[4 * i + 2], snap.points[4 * i + 3]);
+          s.vertices[i] = Vec4(snap.points[4 * i], snap.points[4 * i + 1], snap.points[4 * i + 2],
+                               snap.points[4 * i + 3]);
       target.bind();
       renderer.draw(scene, 800, 600);
       target.resolve_and_read();  // waits for the frame, as a swap would
@@ -117,11 +118,12 @@ void BM_HapticLoopJitter(benchmark::State& state) {
       "over 2 ms %llu; tick work p50 %.1f / p99 %.1f / max %.1f us; %.1f fps; SCHED_FIFO %s%s%s\n",
       seconds,
       cloth_n > 0 ? ("cloth " + std::to_string(cloth_n) + "x" + std::to_string(cloth_n) +
-                     (state.range(2) ? " on its own thread" : " in the tick")).c_str()
+                     (state.range(2) ? " on its own thread" : " in the tick"))
+                        .c_str()
                   : "sticky plane",
       render ? " + 60 fps render" : "", p.p50_us, p.p99_us, p.p999_us, p.max_us,
-      static_cast<unsigned long long>(p.missed), static_cast<unsigned long long>(p.over_2ms), w.p50_us, w.p99_us,
-      w.max_us, frames / seconds, realtime ? "yes" : "no", note.empty() ? "" : "; ", note.c_str());
+      static_cast<unsigned long long>(p.missed), static_cast<unsigned long long>(p.over_2ms), w.p50_us,
+      w.p99_us, w.max_us, frames / seconds, realtime ? "yes" : "no", note.empty() ? "" : "; ", note.c_str());
 }
 
 BENCHMARK(BM_HapticLoopJitter)

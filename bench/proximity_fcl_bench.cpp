@@ -1,6 +1,7 @@
 // D = 3 comparison with FCL on the same triangle mesh (the crumpled 64×64 grid's xyz part): all
 // non-adjacent triangle pairs within δ. FCL: dynamic AABB tree over δ-inflated triangle boxes,
-// then fcl::distance on one-triangle BVHModel<OBBRSS> pairs. Ours: SelfProximity<3, 3>. Ratio = FCL time / ours.
+// then fcl::distance on one-triangle BVHModel<OBBRSS> pairs. Ours: SelfProximity<3, 3>.
+// Ratio = FCL time / ours.
 #include <benchmark/benchmark.h>
 
 #include <fcl/fcl.h>

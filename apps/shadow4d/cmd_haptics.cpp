@@ -96,7 +96,8 @@ void run(const HapticsArgs& a) {
   if (replay)
     for (const auto& [name, value] : replay->trajectory().header.params) {
       const int i = scene->find_param(name);
-      if (i < 0) throw Error("replay: the recording sets parameter '" + name + "' unknown to scene " + choice.name);
+      if (i < 0)
+        throw Error("replay: the recording sets parameter '" + name + "' unknown to scene " + choice.name);
       scene->set_param(i, value);
     }
   int vertex = -1;
@@ -176,14 +177,16 @@ void run(const HapticsArgs& a) {
                 static_cast<unsigned long long>(s.safety.rate_limited),
                 static_cast<unsigned long long>(s.safety.nonfinite));
     if (!a.record.empty())
-      std::printf("  recorded %llu ticks to %s\n", static_cast<unsigned long long>(loop.ticks()), a.record.c_str());
+      std::printf("  recorded %llu ticks to %s\n", static_cast<unsigned long long>(loop.ticks()),
+                  a.record.c_str());
     if (replay)
       std::printf("  replay: %llu forces compared with the recording, %llu differ%s\n",
                   static_cast<unsigned long long>(replay->compared()),
                   static_cast<unsigned long long>(replay->mismatches()),
                   replay->mismatches() ? "" : " (bit-identical)");
     if (replay && recorded_async)
-      std::printf("  (recorded with --async-physics: the simulation's timing was not recorded, forces may differ)\n");
+      std::printf(
+          "  (recorded with --async-physics: the simulation's timing was not recorded, forces may differ)\n");
   }
   if (replay && replay->mismatches() > 0 && !recorded_async) throw ExitStatus{2};
 }
@@ -198,7 +201,8 @@ const CommandRegistrar kHaptics(
       sub.add_option("--record", a->record, "record the device stream and forces to this file");
       sub.add_flag("--json", a->json, "print the statistics as JSON");
       sub.add_option("--scene", a->scene.name, kSceneChoiceHelp)->capture_default_str();
-      sub.add_option("--cloth-n", a->scene.cloth_n, "vertices per side of the 4D cloth")->capture_default_str();
+      sub.add_option("--cloth-n", a->scene.cloth_n, "vertices per side of the 4D cloth")
+          ->capture_default_str();
       sub.add_flag("--no-collisions", a->no_collisions, "cloth without collision avoidance");
       sub.add_flag("--async-physics", a->scene.async_physics,
                    "step the cloth on its own thread so a slow simulation cannot stall the loop");

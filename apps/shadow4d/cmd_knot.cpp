@@ -183,7 +183,8 @@ void setup(CLI::App& knot) {
     o.prove_unknot = prove;
     const auto t0 = std::chrono::steady_clock::now();
     const auto id = identify_knot(load_knot_curve(idc.file), o);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (idc.json_out) {
       json j = identification_json(id);
       j["milliseconds"] = ms;
@@ -291,14 +292,17 @@ void setup(CLI::App& knot) {
   static int points = 0;
   auto* resample = knot.add_subcommand("resample", "nearly equal segments, never passing through itself");
   add_common(resample, sc, false);
-  resample->add_option("--points", points, "total number of points")->required()->check(CLI::Range(3, 10000000));
+  resample->add_option("--points", points, "total number of points")
+      ->required()
+      ->check(CLI::Range(3, 10000000));
   resample->add_option("--out", resample_out, "where to write the curve")->required();
   resample->callback([] {
     ResampleStats st;
     const Curve<3> out = resample_curve_to_count(load_knot_curve(sc.file), points, &st);
     write_shape_file(out, resample_out);
     if (sc.json_out)
-      std::cout << json{{"points", out.point_count()}, {"moves", st.moves}, {"refused", st.refused}}.dump(2) << "\n";
+      std::cout << json{{"points", out.point_count()}, {"moves", st.moves}, {"refused", st.refused}}.dump(2)
+                << "\n";
     else
       std::cout << "resampled to " << out.point_count() << " points (" << st.refused
                 << " chords refused to avoid a pass-through); wrote " << resample_out << "\n";
@@ -313,10 +317,16 @@ void setup(CLI::App& knot) {
   auto* sketch = knot.add_subcommand("sketch", "smooth a raw sketched stroke with Dynadraw (Haeberli)");
   sketch->add_option("file", sketch_in, "stroke: a curve file of cursor samples")->required();
   sketch->add_option("--out", sketch_out, "where to write the smoothed curve")->required();
-  sketch->add_option("--dt", sketch_dt, "seconds between samples")->capture_default_str()->check(CLI::Range(1e-5, 1.0));
+  sketch->add_option("--dt", sketch_dt, "seconds between samples")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-5, 1.0));
   sketch->add_option("--mass", pen.mass, "pen mass, kg")->capture_default_str()->check(CLI::Range(1e-6, 1e6));
-  sketch->add_option("--stiffness", pen.stiffness, "spring to the cursor, N/m")->capture_default_str()->check(CLI::Range(1e-6, 1e9));
-  sketch->add_option("--damping", pen.damping, "drag, N s/m")->capture_default_str()->check(CLI::Range(0.0, 1e9));
+  sketch->add_option("--stiffness", pen.stiffness, "spring to the cursor, N/m")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-6, 1e9));
+  sketch->add_option("--damping", pen.damping, "drag, N s/m")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1e9));
   sketch->add_flag("--json", sketch_json, "machine-readable output");
   sketch->callback([] {
     const Curve<3> raw = load_knot_curve(sketch_in);
@@ -343,8 +353,12 @@ void setup(CLI::App& knot) {
   auto* depth = knot.add_subcommand("smooth-depth", "smooth the depth of a curve, keeping its diagram");
   add_common(depth, dc);
   depth->add_option("--out", depth_out, "where to write the curve")->required();
-  depth->add_option("--iterations", ds.iterations, "smoothing passes")->capture_default_str()->check(CLI::Range(1, 1000000));
-  depth->add_option("--clearance", ds.clearance, "depth gap kept at crossings, x curve size")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  depth->add_option("--iterations", ds.iterations, "smoothing passes")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
+  depth->add_option("--clearance", ds.clearance, "depth gap kept at crossings, x curve size")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   depth->callback([] {
     const Curve<3> c = load_knot_curve(dc.file);
     const Frame<3> view = parse_view(dc.view);
@@ -354,13 +368,17 @@ void setup(CLI::App& knot) {
     o.frame = view;
     const auto before = identify_knot(c, o), after = identify_knot(out, o);
     if (dc.json_out)
-      std::cout << json{{"before", identification_json(before)}, {"after", identification_json(after)}}.dump(2) << "\n";
+      std::cout << json{{"before", identification_json(before)}, {"after", identification_json(after)}}
+                       .dump(2)
+                << "\n";
     else
-      std::cout << "depth smoothed: " << before.name << " -> " << after.name << "; wrote " << depth_out << "\n";
+      std::cout << "depth smoothed: " << before.name << " -> " << after.name << "; wrote " << depth_out
+                << "\n";
   });
 }
 
-const CommandRegistrar kKnot("knot", "knot engine: identify, code, compare, relax, flip, resample, sketch, smooth-depth", setup);
+const CommandRegistrar kKnot(
+    "knot", "knot engine: identify, code, compare, relax, flip, resample, sketch, smooth-depth", setup);
 
 }  // namespace
 }  // namespace s4d::cli

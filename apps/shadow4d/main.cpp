@@ -22,8 +22,9 @@ int main(int argc, char** argv) {
   app.add_option("--window-shot", window_shot, "GUI: save the window, panels included, at the last frame")
       ->group("GUI scripting");
   std::string device;
-  app.add_option("--device", device,
-                 "GUI: start the haptic loop with this device: mouse, sim, replay:FILE, spacenav, openhaptics");
+  app.add_option(
+      "--device", device,
+      "GUI: start the haptic loop with this device: mouse, sim, replay:FILE, spacenav, openhaptics");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "log more");
   s4d::cli::add_registered_commands(app);

@@ -50,7 +50,8 @@ Surface<4> build_object(const ObjectSpec& o, int dim) {
     if (!s.grid) throw Error(o.name + ": w_by_row needs a grid surface");
     for (int i = 0; i < s.grid->rows; ++i)
       for (int j = 0; j < s.grid->cols; ++j)
-        s.vertices[s.grid->index(i, j)][3] += o.w_by_row * (static_cast<double>(i) / (s.grid->rows - 1) - 0.5);
+        s.vertices[s.grid->index(i, j)][3] +=
+            o.w_by_row * (static_cast<double>(i) / (s.grid->rows - 1) - 0.5);
   }
   for (Vec4& p : s.vertices)
     for (std::size_t k = 0; k < o.offset.size(); ++k) p[k] += o.offset[k];
@@ -144,7 +145,8 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
       for (int i : s.indices) {
         const int local = i < 0 ? n + i : i;
         if (local < 0 || local >= n)
-          throw Error(s.object + ": vertex " + std::to_string(i) + " out of range (it has " + std::to_string(n) + ")");
+          throw Error(s.object + ": vertex " + std::to_string(i) + " out of range (it has " +
+                      std::to_string(n) + ")");
         v.push_back(first[o] + local);
       }
     } else if (!s.all) {
@@ -190,7 +192,8 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     Json f{{"frame", k}, {"time", world.data().time}, {"intersections", bad},
            {"min_gap", std::isfinite(gap) ? Json(gap) : Json(nullptr)}};
     if (spec.verdict.kind == "shadow-clean") {
-      const ShadowCheck sc = check_shadow(current_surface(object_index(spec.verdict.object)), spec.verdict.view);
+      const ShadowCheck sc =
+          check_shadow(current_surface(object_index(spec.verdict.object)), spec.verdict.view);
       f["shadow_length"] = sc.total_length;
       f["shadow_curves"] = sc.curves;
       shadow_log.push_back(sc);
@@ -314,10 +317,11 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
       const int need = static_cast<int>(num("min_crossings", 3));
       ok = k1.min_crossings >= need && k1.error.empty() && k0.error.empty() &&
            k1.determinant == k0.determinant && k1.fingerprint == k0.fingerprint && k0.determinant == 3;
-      detail = "closed centre line has >= " + std::to_string(k1.min_crossings) + " crossings in every view (need " +
-               std::to_string(need) + "), det " + std::to_string(k1.determinant) + " (start " +
-               std::to_string(k0.determinant) + "), knot type " +
-               (k1.fingerprint == k0.fingerprint ? "unchanged" : "CHANGED") + ", ends " + fmt(ends) + " of length";
+      detail = "closed centre line has >= " + std::to_string(k1.min_crossings) +
+               " crossings in every view (need " + std::to_string(need) + "), det " +
+               std::to_string(k1.determinant) + " (start " + std::to_string(k0.determinant) +
+               "), knot type " + (k1.fingerprint == k0.fingerprint ? "unchanged" : "CHANGED") + ", ends " +
+               fmt(ends) + " of length";
     }
   } else if (vd.kind == "slides-off") {
     const int axis = static_cast<int>(num("axis", 1));
@@ -354,8 +358,8 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     for (int c = 0; c < nc; ++c) verdict["rise_per_component"][c] = rise[c] / cnt[c];
     const double need = num("min_rise", 0);
     ok = worst >= need;
-    detail = std::to_string(nc) + " components, the lowest rose " + fmt(worst) + " (need >= " + fmt(need) + ")" +
-             (reference_time > 0 ? " since t = " + fmt(reference_time) + " s" : "");
+    detail = std::to_string(nc) + " components, the lowest rose " + fmt(worst) + " (need >= " + fmt(need) +
+             ")" + (reference_time > 0 ? " since t = " + fmt(reference_time) + " s" : "");
   } else if (vd.kind == "shadow-clean") {
     // The shadow's self-intersection curves at the start (they must exist, or the scenario proves
     // nothing) and at the end (their total length must have gone to max_final_length, 0 = none).
@@ -376,7 +380,9 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     detail = "shadow self-intersection length " + fmt(s0.total_length) + " in " + std::to_string(s0.curves) +
              " curves at the start (need >= " + fmt(need0) + "), " + fmt(s1.total_length) + " in " +
              std::to_string(s1.curves) + " curves at the end (need <= " + fmt(max1) + ")" +
-             (s1.coplanar_pairs > 0 ? ", " + std::to_string(s1.coplanar_pairs) + " coplanar pairs (view not generic)" : "");
+             (s1.coplanar_pairs > 0
+                  ? ", " + std::to_string(s1.coplanar_pairs) + " coplanar pairs (view not generic)"
+                  : "");
   } else {  // deforms: how far the body moved, not the vertices the tool carried
     std::vector<std::uint8_t> tool(model.nv, 0);
     for (const ActiveTool& t : tools)
@@ -387,7 +393,8 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
     verdict["max_displacement"] = moved;
     const double need = num("min_displacement", 0);
     ok = moved >= need;
-    detail = "largest displacement of a vertex the tool does not hold " + fmt(moved) + " (need >= " + fmt(need) + ")";
+    detail = "largest displacement of a vertex the tool does not hold " + fmt(moved) +
+             " (need >= " + fmt(need) + ")";
   }
   const bool embedded = total_intersections == 0 && min_gap > 0;
   ok = ok && embedded;
@@ -416,11 +423,12 @@ RunResult run(const ScenarioSpec& spec, const RunOptions& opt) {
   RunResult r;
   r.pass = ok;
   r.line = std::string(ok ? "PASS " : "FAIL ") + spec.name + ": " + detail + "; " +
-           std::to_string(total_intersections) + " true intersections in " + std::to_string(frame_log.size()) +
-           " frames (min gap " + fmt(min_gap) + ", hard layer " + fmt(model.hard_thickness) + "); " +
-           std::to_string(model.nv) + " vertices, " + std::to_string(steps) + " steps, " +
-           fmt(1e3 * wall / std::max<long>(1, steps)) + " ms/step, " + std::to_string(w.rollbacks) +
-           " rollbacks, " + std::to_string(w.global_freezes) + " global freezes";
+           std::to_string(total_intersections) + " true intersections in " +
+           std::to_string(frame_log.size()) + " frames (min gap " + fmt(min_gap) + ", hard layer " +
+           fmt(model.hard_thickness) + "); " + std::to_string(model.nv) + " vertices, " +
+           std::to_string(steps) + " steps, " + fmt(1e3 * wall / std::max<long>(1, steps)) + " ms/step, " +
+           std::to_string(w.rollbacks) + " rollbacks, " + std::to_string(w.global_freezes) +
+           " global freezes";
   return r;
 }
 

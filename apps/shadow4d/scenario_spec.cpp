@@ -60,12 +60,15 @@ void parse_physics(const Json& j, const Ctx& c, int dim, PhysicsParams<4>& p) {
   if (j.contains("mass")) p.mass = c.number(j["mass"], "physics.mass", 1e-9, 1e3);
   if (j.contains("stiffness")) p.stiffness = c.number(j["stiffness"], "physics.stiffness", 0, 1e9);
   if (j.contains("shear_scale")) p.shear_scale = c.number(j["shear_scale"], "physics.shear_scale", 0, 10);
-  if (j.contains("bending_scale")) p.bending_scale = c.number(j["bending_scale"], "physics.bending_scale", 0, 10);
+  if (j.contains("bending_scale"))
+    p.bending_scale = c.number(j["bending_scale"], "physics.bending_scale", 0, 10);
   if (j.contains("beta")) p.beta = c.number(j["beta"], "physics.beta", 0, 4);
   if (j.contains("damping")) p.damping = c.number(j["damping"], "physics.damping", 0, 1e3);
-  if (j.contains("spring_damping")) p.spring_damping = c.number(j["spring_damping"], "physics.spring_damping", 0, 1e3);
+  if (j.contains("spring_damping"))
+    p.spring_damping = c.number(j["spring_damping"], "physics.spring_damping", 0, 1e3);
   if (j.contains("friction")) p.friction = c.number(j["friction"], "physics.friction", 0, 100);
-  if (j.contains("max_step_motion")) p.max_step_motion = c.number(j["max_step_motion"], "physics.max_step_motion", 0, 10);
+  if (j.contains("max_step_motion"))
+    p.max_step_motion = c.number(j["max_step_motion"], "physics.max_step_motion", 0, 10);
   if (j.contains("collisions")) {
     if (!j["collisions"].is_boolean()) c.fail("physics.collisions", "must be true or false");
     p.collisions = j["collisions"].get<bool>();
@@ -95,8 +98,10 @@ Selection parse_selection(const Json& j, const Ctx& c, const std::string& where,
     s.max_side = side == "max";
     s.count = static_cast<int>(c.number(e.value("count", Json(1)), where + ".extreme.count", 1, 1e6));
   } else if (j.contains("vertices")) {
-    if (!j["vertices"].is_array() || j["vertices"].empty()) c.fail(where + ".vertices", "must be a non-empty array");
-    for (const Json& v : j["vertices"]) s.indices.push_back(static_cast<int>(c.number(v, where + ".vertices", -1e9, 1e9)));
+    if (!j["vertices"].is_array() || j["vertices"].empty())
+      c.fail(where + ".vertices", "must be a non-empty array");
+    for (const Json& v : j["vertices"])
+      s.indices.push_back(static_cast<int>(c.number(v, where + ".vertices", -1e9, 1e9)));
   } else if (!s.all) {
     c.fail(where, "needs \"all\": true, \"vertices\" or an \"extreme\" selection");
   }
@@ -140,7 +145,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     ObjectSpec ob;
     ob.name = c.text(o.value("name", Json()), w + ".name");
     ob.generator.name = c.text(o.value("generator", Json()), w + ".generator");
-    if (!find_generator(ob.generator.name)) c.fail(w + ".generator", "unknown generator '" + ob.generator.name + "'");
+    if (!find_generator(ob.generator.name))
+      c.fail(w + ".generator", "unknown generator '" + ob.generator.name + "'");
     if (o.contains("params")) {
       if (!o["params"].is_object()) c.fail(w + ".params", "must be an object");
       for (const auto& [k, v] : o["params"].items())
@@ -150,7 +156,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
     if (o.contains("matrix")) ob.matrix = c.vec(o["matrix"], w + ".matrix", 16);
     if (o.contains("mirror")) {
       if (!o["mirror"].is_array()) c.fail(w + ".mirror", "must be an array of axes");
-      for (const Json& a : o["mirror"]) ob.mirror.push_back(static_cast<int>(c.number(a, w + ".mirror", 0, s.dim - 1)));
+      for (const Json& a : o["mirror"])
+        ob.mirror.push_back(static_cast<int>(c.number(a, w + ".mirror", 0, s.dim - 1)));
     }
     if (o.contains("w_by_row")) {
       if (s.dim != 4) c.fail(w + ".w_by_row", "only makes sense in R^4");
@@ -210,7 +217,8 @@ ScenarioSpec load_scenario(const std::filesystem::path& path) {
   if (v.contains("close_via")) s.verdict.close_via = c.vec(v["close_via"], "verdict.close_via", s.dim);
   if (v.contains("numbers")) {
     if (!v["numbers"].is_object()) c.fail("verdict.numbers", "must be an object");
-    for (const auto& [k, x] : v["numbers"].items()) s.verdict.numbers[k] = c.number(x, "verdict.numbers." + k, -1e9, 1e9);
+    for (const auto& [k, x] : v["numbers"].items())
+      s.verdict.numbers[k] = c.number(x, "verdict.numbers." + k, -1e9, 1e9);
   }
   return s;
 }

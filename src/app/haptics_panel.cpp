@@ -88,9 +88,10 @@ void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSna
 
   // [SECTION] safety
   ImGui::Separator();
-  ImGui::Text("force %.2f N (max %.2f N), safety: %s, gain %.2f", snap.force_output.norm(), snap.max_force_output,
-              safety_phase_name(snap.safety_phase), snap.safety_gain);
-  ImGui::Text("clamped %llu, rate-limited %llu, non-finite %llu", static_cast<unsigned long long>(snap.safety.clamped),
+  ImGui::Text("force %.2f N (max %.2f N), safety: %s, gain %.2f", snap.force_output.norm(),
+              snap.max_force_output, safety_phase_name(snap.safety_phase), snap.safety_gain);
+  ImGui::Text("clamped %llu, rate-limited %llu, non-finite %llu",
+              static_cast<unsigned long long>(snap.safety.clamped),
               static_cast<unsigned long long>(snap.safety.rate_limited),
               static_cast<unsigned long long>(snap.safety.nonfinite));
   ImGui::SliderFloat("arrow m/N", &ui.arrow_scale, 0.001f, 0.05f, "%.3f");

@@ -32,14 +32,16 @@ struct Canvas {
 
 void draw_canvas(const Canvas& c, const HapticSnapshot& snap, const ForceArrow& arrow) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->AddRectFilled(c.origin, ImVec2(c.origin.x + c.size.x, c.origin.y + c.size.y), IM_COL32(22, 24, 30, 255));
+  dl->AddRectFilled(c.origin, ImVec2(c.origin.x + c.size.x, c.origin.y + c.size.y),
+                    IM_COL32(22, 24, 30, 255));
   dl->AddRect(c.origin, ImVec2(c.origin.x + c.size.x, c.origin.y + c.size.y), IM_COL32(90, 90, 100, 255));
   const int d = snap.point_dimension;
   for (std::size_t i = 0; d >= 3 && i + d <= snap.points.size(); i += d) {
     const Vec3 p(snap.points[i], snap.points[i + 1], snap.points[i + 2]);
     dl->AddCircleFilled(c.to_screen(p), 1.5f, IM_COL32(150, 160, 190, 200));
   }
-  if (arrow.engaged) dl->AddLine(c.to_screen(arrow.from), c.to_screen(arrow.anchor), IM_COL32(230, 200, 60, 255), 1.5f);
+  if (arrow.engaged)
+    dl->AddLine(c.to_screen(arrow.from), c.to_screen(arrow.anchor), IM_COL32(230, 200, 60, 255), 1.5f);
   dl->AddCircle(c.to_screen(arrow.target), 6.0f, IM_COL32(200, 200, 200, 255), 16, 1.5f);  // the hand
   dl->AddLine(c.to_screen(arrow.target), c.to_screen(arrow.from), IM_COL32(200, 200, 200, 120));  // lag
   dl->AddCircleFilled(c.to_screen(arrow.from), 5.0f, colour(arrow.rgba));  // the proxy
@@ -61,7 +63,8 @@ void HapticsWindow::start(const std::string& device_spec) {
   try {
     SceneChoice choice;
     choice.name = kScenes[scene_choice_];
-    loop_ = std::make_unique<HapticLoop>(make_device(parse_device_spec(device_spec)), make_haptic_scene(choice));
+    loop_ =
+        std::make_unique<HapticLoop>(make_device(parse_device_spec(device_spec)), make_haptic_scene(choice));
     loop_->start();
     start_error_.clear();
     ui_.open = true;
@@ -115,9 +118,18 @@ void HapticsWindow::workspace_view(const HapticSnapshot& snap) {
   const ForceArrow arrow = force_arrow(snap, ui_.arrow_scale);
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float side = std::max(60.0f, std::min(avail.x * 0.62f, avail.y));
-  Canvas top{ImGui::GetCursorScreenPos(), ImVec2(side, side), snap.caps.workspace_min, snap.caps.workspace_max, 0, 1};
-  Canvas front{ImVec2(top.origin.x + side + 8, top.origin.y), ImVec2(std::max(40.0f, avail.x - side - 8), side),
-               snap.caps.workspace_min, snap.caps.workspace_max, 0, 2};
+  Canvas top{ImGui::GetCursorScreenPos(),
+             ImVec2(side, side),
+             snap.caps.workspace_min,
+             snap.caps.workspace_max,
+             0,
+             1};
+  Canvas front{ImVec2(top.origin.x + side + 8, top.origin.y),
+               ImVec2(std::max(40.0f, avail.x - side - 8), side),
+               snap.caps.workspace_min,
+               snap.caps.workspace_max,
+               0,
+               2};
   draw_canvas(top, snap, arrow);
   draw_canvas(front, snap, arrow);
   ImGui::InvisibleButton("workspace", top.size);
@@ -128,7 +140,8 @@ void HapticsWindow::workspace_view(const HapticSnapshot& snap) {
     const ImVec2 m = ImGui::GetIO().MousePos;
     const double nx = 2.0 * (m.x - top.origin.x) / top.size.x - 1.0;
     const double ny = 1.0 - 2.0 * (m.y - top.origin.y) / top.size.y;
-    loop_->set_pointer(pointer_to_workspace(snap.caps, std::clamp(nx, -1.0, 1.0), std::clamp(ny, -1.0, 1.0), depth_), 1u);
+    loop_->set_pointer(
+        pointer_to_workspace(snap.caps, std::clamp(nx, -1.0, 1.0), std::clamp(ny, -1.0, 1.0), depth_), 1u);
   } else if (hovered) {
     loop_->set_pointer(arrow.target, 0u);
   }

@@ -225,7 +225,8 @@ void Panels::dialogs(GuiModel& model) {
   // time (the auto-sized panels do on frame 2) while a modal is open, e.g. after a failed open.
   if (!model.error.empty()) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Appearing,
+                            ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(480, 0), ImGuiCond_Appearing);
     bool open = true;
     ImGui::Begin("Error", &open, ImGuiWindowFlags_NoCollapse);

@@ -63,7 +63,8 @@ void AsyncSimulation::run() {
       publish();
     }
     const std::uint64_t steps = sim_steps_.load(std::memory_order_relaxed);
-    const std::uint64_t target = haptic_ns_.load(std::memory_order_relaxed) - skipped_ns_.load(std::memory_order_relaxed);
+    const std::uint64_t target =
+        haptic_ns_.load(std::memory_order_relaxed) - skipped_ns_.load(std::memory_order_relaxed);
     if (target > steps * step_ns + kMaxLagNs) {
       // Too slow for real time: let the simulation run in slow motion rather than race to catch up later.
       skipped_ns_.fetch_add(target - steps * step_ns - kMaxLagNs, std::memory_order_relaxed);

@@ -254,7 +254,8 @@ void HapticLoop::thread_main() {
     pthread_setaffinity_np(pthread_self(), sizeof set, &set);
   }
   const auto period = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
-  const std::uint64_t summary_every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(config_.rate_hz / 10));
+  const std::uint64_t summary_every =
+      std::max<std::uint64_t>(1, static_cast<std::uint64_t>(config_.rate_hz / 10));
   std::int64_t deadline = now_ns();
   std::int64_t last_wake = deadline;
   bool missed = false;

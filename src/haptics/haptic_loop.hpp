@@ -67,7 +67,8 @@ struct HapticSnapshot {
 
 class HapticLoop {
  public:
-  HapticLoop(std::unique_ptr<Device> device, std::unique_ptr<HapticScene> scene, const HapticLoopConfig& config = {});
+  HapticLoop(std::unique_ptr<Device> device, std::unique_ptr<HapticScene> scene,
+             const HapticLoopConfig& config = {});
   ~HapticLoop();
   HapticLoop(const HapticLoop&) = delete;
   HapticLoop& operator=(const HapticLoop&) = delete;

@@ -16,7 +16,8 @@ std::unique_ptr<HapticScene> make_haptic_scene(const SceneChoice& choice) {
   if (choice.name == "plane" || choice.name == "sticky-plane") return std::make_unique<StickyPlaneScene>();
   if (choice.name == "cloth" || choice.name == "rubber-band") {
     if (choice.cloth_n < 2 || choice.cloth_n > 256)
-      throw Error("cloth size must be between 2 and 256 vertices per side, got " + std::to_string(choice.cloth_n));
+      throw Error("cloth size must be between 2 and 256 vertices per side, got " +
+                  std::to_string(choice.cloth_n));
     PhysicsParams<4> p;
     p.gravity = Vec4(0, -9.81, 0, 0);
     p.collisions = choice.collisions;
@@ -31,7 +32,8 @@ std::unique_ptr<HapticScene> make_haptic_scene(const SceneChoice& choice) {
     }
     Frame<4> frame;
     frame.rotate(Plane{0, 3}, 0.4);  // a generic view: the shadow mixes x and w
-    std::unique_ptr<GrabbableSimulation> sim = std::make_unique<WorldSimulation<4>>(std::move(world), frame, 1.0);
+    std::unique_ptr<GrabbableSimulation> sim =
+        std::make_unique<WorldSimulation<4>>(std::move(world), frame, 1.0);
     if (choice.async_physics) sim = std::make_unique<AsyncSimulation>(std::move(sim), p.time_step);
     return std::make_unique<RubberBandScene>(std::move(sim));
   }

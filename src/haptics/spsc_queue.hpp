@@ -41,7 +41,9 @@ class SpscQueue {
 
   static constexpr std::size_t capacity() { return N; }
   // Approximate (exact when called from either side with the other idle).
-  std::size_t size() const { return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire); }
+  std::size_t size() const {
+    return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
+  }
 
  private:
   std::array<T, N> ring_{};

@@ -73,7 +73,8 @@ struct LineReader {
   }
   void expect(const std::vector<std::string_view>& w, std::size_t n, const char* what) const {
     if (w.size() != n)
-      fail(std::string(what) + " needs " + std::to_string(n - 1) + " values, found " + std::to_string(w.size() - 1));
+      fail(std::string(what) + " needs " + std::to_string(n - 1) + " values, found " +
+           std::to_string(w.size() - 1));
   }
 };
 
@@ -102,7 +103,8 @@ std::string format_header(const TrajectoryHeader& h) {
   append_number(out, h.rate);
   out += "\ndevice " + h.device + "\nscene " + h.scene + "\ncaps";
   const DeviceCapabilities& c = h.caps;
-  for (double v : {c.max_force, c.max_continuous_force, c.max_stiffness, c.max_force_rate}) append_number(out, v);
+  for (double v : {c.max_force, c.max_continuous_force, c.max_stiffness, c.max_force_rate})
+    append_number(out, v);
   out += c.outputs_force ? " 1" : " 0";
   for (int i = 0; i < 3; ++i) append_number(out, c.workspace_min[i]);
   for (int i = 0; i < 3; ++i) append_number(out, c.workspace_max[i]);

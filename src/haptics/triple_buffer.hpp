@@ -19,7 +19,8 @@ class TripleBuffer {
   // Writer side.
   T& back() { return slots_[back_]; }
   void publish() {
-    const std::uint8_t old = middle_.exchange(static_cast<std::uint8_t>(back_ | kFresh), std::memory_order_acq_rel);
+    const std::uint8_t old =
+        middle_.exchange(static_cast<std::uint8_t>(back_ | kFresh), std::memory_order_acq_rel);
     back_ = old & kIndex;
   }
   // Convenience: copy-assign and publish (allocates only if T's assignment does).

@@ -20,7 +20,9 @@ class WorldSimulation final : public GrabbableSimulation {
   WorldSimulation(World<D> world, const Frame<D>& frame, double scale, const Vec3& offset = Vec3::Zero());
 
   int vertex_count() const override { return world_.vertex_count(); }
-  Vec3 shadow_position(int v) const override { return offset_ + scale_ * lift(frame_.shadow(world_.positions()[v])); }
+  Vec3 shadow_position(int v) const override {
+    return offset_ + scale_ * lift(frame_.shadow(world_.positions()[v]));
+  }
   Vec3 shadow_velocity(int v) const override { return scale_ * lift(frame_.shadow(world_.velocities()[v])); }
   void set_external_force(int v, const Vec3& f) override;
   void step(double dt) override { world_.step(dt); }

@@ -60,8 +60,9 @@ Shape parse_curve_text(std::string_view text, const std::string& origin) {
     if (in_component) {
       const std::size_t k = p.starts.size() - 1;
       if (count_of(k) < 2)
-        throw ParseError(origin, p.first_lines[k],
-                         "a curve component needs at least 2 points, this one has " + std::to_string(count_of(k)));
+        throw ParseError(
+            origin, p.first_lines[k],
+            "a curve component needs at least 2 points, this one has " + std::to_string(count_of(k)));
     }
     in_component = false;
   };
@@ -85,7 +86,8 @@ Shape parse_curve_text(std::string_view text, const std::string& origin) {
         pending_open = d == "open";
         pending_line = line_no;
       } else {
-        throw ParseError(origin, line_no, "unknown directive " + quote_token(t) + " (expected '#! open' or '#! closed')");
+        throw ParseError(origin, line_no,
+                         "unknown directive " + quote_token(t) + " (expected '#! open' or '#! closed')");
       }
       continue;
     }
@@ -110,8 +112,9 @@ Shape parse_curve_text(std::string_view text, const std::string& origin) {
     if (n == 0) continue;  // a comment-only line does not separate components
     if (p.dim == 0) {
       if (n != 3 && n != 4)
-        throw ParseError(origin, line_no,
-                         "a point has 3 (x y z) or 4 (x y z w) coordinates, this line has " + std::to_string(n));
+        throw ParseError(
+            origin, line_no,
+            "a point has 3 (x y z) or 4 (x y z w) coordinates, this line has " + std::to_string(n));
       p.dim = n;
     } else if (n != p.dim) {
       throw ParseError(origin, line_no,
@@ -142,8 +145,8 @@ Shape read_curve_text(const std::filesystem::path& path) {
 template <int D>
 std::string format_curve_text(const Curve<D>& c) {
   if (c.components.empty()) throw Error("cannot write an empty curve (no components)");
-  std::string out = "# shadow4d curve in R^" + std::to_string(D) + ", " + std::to_string(c.components.size()) +
-                    " component(s); blank lines separate components\n";
+  std::string out = "# shadow4d curve in R^" + std::to_string(D) + ", " +
+                    std::to_string(c.components.size()) + " component(s); blank lines separate components\n";
   for (std::size_t k = 0; k < c.components.size(); ++k) {
     const Polyline<D>& poly = c.components[k];
     if (poly.points.size() < 2)
@@ -151,7 +154,8 @@ std::string format_curve_text(const Curve<D>& c) {
     out += "\n";
     if (!poly.closed) out += "#! open\n";
     for (const Vec<D>& v : poly.points) {
-      if (!v.allFinite()) throw Error("cannot write curve: component " + std::to_string(k) + " has a non-finite point");
+      if (!v.allFinite())
+        throw Error("cannot write curve: component " + std::to_string(k) + " has a non-finite point");
       for (int d = 0; d < D; ++d) {
         if (d) out += ' ';
         append_double(out, v[d]);

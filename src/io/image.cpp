@@ -41,10 +41,12 @@ void write_png(const Image& image, const std::filesystem::path& path) {
     throw Error("cannot write " + path.string() + ": image is too large");
   const std::size_t expected = static_cast<std::size_t>(image.width) * image.height * 4;
   if (image.rgba.size() != expected)
-    throw Error("cannot write " + path.string() + ": pixel buffer holds " + std::to_string(image.rgba.size()) +
+    throw Error("cannot write " + path.string() + ": pixel buffer holds " +
+                std::to_string(image.rgba.size()) +
                 " bytes, expected width × height × 4 = " + std::to_string(expected));
   std::string png;
-  if (!stbi_write_png_to_func(append_bytes, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+  if (!stbi_write_png_to_func(append_bytes, &png, image.width, image.height, 4, image.rgba.data(),
+                              image.width * 4))
     throw Error("cannot write " + path.string() + ": PNG encoding failed");
   write_text_file(path, png);
 }
@@ -60,7 +62,8 @@ Image read_png(const std::filesystem::path& path) {
   if (!stbi_info_from_memory(data, static_cast<int>(bytes.size()), &w, &h, &channels))
     throw Error(path.string() + ": corrupt PNG (" + stbi_failure_reason() + ")");
   if (w <= 0 || h <= 0 || static_cast<long long>(w) * h > kMaxPixels)
-    throw Error(path.string() + ": PNG size " + std::to_string(w) + "×" + std::to_string(h) + " is not supported");
+    throw Error(path.string() + ": PNG size " + std::to_string(w) + "×" + std::to_string(h) +
+                " is not supported");
   stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(bytes.size()), &w, &h, &channels, 4);
   if (!pixels) throw Error(path.string() + ": corrupt PNG (" + stbi_failure_reason() + ")");
   Image image;

@@ -36,7 +36,9 @@ void translate(T& points, const auto& offset) {
 
 }  // namespace
 
-bool is_shape_file_extension(const std::filesystem::path& path) { return format_of(path) != Format::kUnknown; }
+bool is_shape_file_extension(const std::filesystem::path& path) {
+  return format_of(path) != Format::kUnknown;
+}
 
 Shape read_shape_file(const std::filesystem::path& path) {
   switch (format_of(path)) {
@@ -56,7 +58,8 @@ void write_shape_file(const Shape& shape, const std::filesystem::path& path) {
         using T = std::decay_t<decltype(s)>;
         constexpr int D = T::kDim;
         if constexpr (std::is_same_v<T, Surface<D>>) {
-          if (f != Format::kOff) throw Error("cannot write a surface to " + path.string() + ": use .off or .4off");
+          if (f != Format::kOff)
+            throw Error("cannot write a surface to " + path.string() + ": use .off or .4off");
           write_off(s, path);
         } else {
           if (f == Format::kVect) {

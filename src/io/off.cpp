@@ -62,7 +62,8 @@ Surface<D> read_body(TextScanner& in, const OffHeader& h) {
     for (int c = 0; c < D; ++c) v[c] = in.next_double("a vertex coordinate");
     if (h.homogeneous) {
       const double w = in.next_double("a homogeneous coordinate");
-      if (w == 0) in.fail("vertex " + std::to_string(i) + " has homogeneous coordinate 0 (a point at infinity)");
+      if (w == 0)
+        in.fail("vertex " + std::to_string(i) + " has homogeneous coordinate 0 (a point at infinity)");
       v /= w;
       if (!v.allFinite()) in.fail("vertex " + std::to_string(i) + " overflows after the homogeneous divide");
     }

@@ -58,8 +58,8 @@ double number(const Json& j, const Ctx& ctx) {
 double number_in(const Json& j, const Ctx& ctx, double lo, double hi, bool lo_open = false) {
   const double v = number(j, ctx);
   if (v < lo || v > hi || (lo_open && v == lo))
-    ctx.fail(format_double(v) + " is out of range: must be in " + (lo_open ? "(" : "[") + format_double(lo) + ", " +
-             format_double(hi) + "]");
+    ctx.fail(format_double(v) + " is out of range: must be in " + (lo_open ? "(" : "[") + format_double(lo) +
+             ", " + format_double(hi) + "]");
   return v;
 }
 
@@ -157,7 +157,8 @@ ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   }
   if (j.contains("wireframe")) v.wireframe = boolean(j["wireframe"], ctx.at("wireframe"));
   if (j.contains("shadow")) v.shadow = boolean(j["shadow"], ctx.at("shadow"));
-  if (j.contains("tube_radius")) v.tube_radius = number_in(j["tube_radius"], ctx.at("tube_radius"), 0, 1e6, true);
+  if (j.contains("tube_radius"))
+    v.tube_radius = number_in(j["tube_radius"], ctx.at("tube_radius"), 0, 1e6, true);
   if (j.contains("background")) v.background = colour(j["background"], ctx.at("background"));
   return v;
 }

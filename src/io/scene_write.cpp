@@ -31,7 +31,10 @@ Json array(const auto& v, int n) {
 std::string safe_name(const std::string& name) {
   std::string out;
   for (char c : name)
-    out += ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_') ? c : '_';
+    out +=
+        ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_')
+            ? c
+            : '_';
   return out.empty() ? "object" : out;
 }
 
@@ -61,7 +64,8 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
       j["generator"] = o.generator->name;
       Json params = Json::object();
       for (const auto& [k, v] : o.generator->params) {
-        if (!std::isfinite(v)) throw Error("cannot save scene: parameter " + k + " of " + o.name + " is not finite");
+        if (!std::isfinite(v))
+          throw Error("cannot save scene: parameter " + k + " of " + o.name + " is not finite");
         params[k] = number(v);
       }
       if (!params.empty()) j["params"] = params;
@@ -72,7 +76,8 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
     } else {
       // Edited geometry: the offset is already in the vertices, so it is not written again.
       std::string file = path.stem().string() + "." + safe_name(o.name);
-      for (int k = 2; mesh_names.count(file); ++k) file = path.stem().string() + "." + safe_name(o.name) + "-" + std::to_string(k);
+      for (int k = 2; mesh_names.count(file); ++k)
+        file = path.stem().string() + "." + safe_name(o.name) + "-" + std::to_string(k);
       mesh_names.insert(file);
       file += native_extension(o.shape);
       write_shape_file(o.shape, dir / file);

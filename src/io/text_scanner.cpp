@@ -21,7 +21,8 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' |
 
 std::string read_text_file(const std::filesystem::path& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ParseError(path.string(), 0, "is a directory, not a file");
+  if (std::filesystem::is_directory(path, ec))
+    throw ParseError(path.string(), 0, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ParseError(path.string(), 0, std::string("cannot open: ") + std::strerror(errno));
   in.seekg(0, std::ios::end);
@@ -180,7 +181,8 @@ double TextScanner::next_double(std::string_view what) {
 long long TextScanner::next_int(std::string_view what, long long lo, long long hi) {
   const std::string_view tok = next_token(what);
   long long v = 0;
-  if (!parse_integer(tok, v)) fail("expected " + std::string(what) + " (an integer), found " + quote_token(tok));
+  if (!parse_integer(tok, v))
+    fail("expected " + std::string(what) + " (an integer), found " + quote_token(tok));
   if (v < lo || v > hi)
     fail(std::string(what) + " is " + std::to_string(v) + ", must be in [" + std::to_string(lo) + ", " +
          std::to_string(hi) + "]");

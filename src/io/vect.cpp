@@ -57,7 +57,8 @@ Curve<D> read_body(TextScanner& in, const VectHeader& h) {
               " vertices; a curve component needs at least 2");
     vertex_sum += a;
     if (vertex_sum > nvert)
-      in.fail("polyline vertex counts add up to more than the declared " + std::to_string(nvert) + " vertices");
+      in.fail("polyline vertex counts add up to more than the declared " + std::to_string(nvert) +
+              " vertices");
     c.components[static_cast<std::size_t>(i)].closed = nv < 0;
     c.components[static_cast<std::size_t>(i)].points.resize(static_cast<std::size_t>(a));
   }
@@ -114,7 +115,8 @@ std::string format_vect(const Curve<D>& c) {
     if (p.points.size() < 2)
       throw Error("cannot write VECT: component " + std::to_string(i) + " has fewer than 2 points");
     for (const Vec<D>& v : p.points)
-      if (!v.allFinite()) throw Error("cannot write VECT: component " + std::to_string(i) + " has a non-finite point");
+      if (!v.allFinite())
+        throw Error("cannot write VECT: component " + std::to_string(i) + " has a non-finite point");
   }
   out += std::to_string(c.components.size()) + " " + std::to_string(c.point_count()) + " 0\n";
   for (std::size_t i = 0; i < c.components.size(); ++i) {

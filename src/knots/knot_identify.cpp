@@ -139,7 +139,9 @@ std::string prime_label(const KnotFactor& f) {
   return s;
 }
 
-bool is_one(const Laurent2& p) { return p.terms.size() == 1 && p.terms.count({0, 0}) && p.terms.at({0, 0}) == 1; }
+bool is_one(const Laurent2& p) {
+  return p.terms.size() == 1 && p.terms.count({0, 0}) && p.terms.at({0, 0}) == 1;
+}
 
 // (alpha - alpha^-1) / z to the power m - 1: the HOMFLY-PT polynomial of the m-component unlink.
 Laurent2 unlink_homfly(int m) {

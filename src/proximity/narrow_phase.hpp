@@ -75,7 +75,8 @@ void narrow_impact(const Simplex<D, KA>& a0, const Simplex<D, KA>& a1, const Sim
   o.t_max = t_max;
   ++best.narrow_tests;
   const CcdResult<D> r = earliest_contact<D, KA, KB>(a0, a1, b0, b1, o);
-  if (r.hit && (!best.hit || r.t < best.t || (r.t == best.t && std::pair(a, b) < std::pair(best.a, best.b)))) {
+  if (r.hit &&
+      (!best.hit || r.t < best.t || (r.t == best.t && std::pair(a, b) < std::pair(best.a, best.b)))) {
     best.hit = true;
     best.t = r.t;
     best.a = a;
@@ -90,7 +91,8 @@ template <int D>
 void sort_pairs(std::vector<ProximityPair<D>>& out, std::vector<std::pair<std::uint64_t, int>>& keys,
                 std::vector<ProximityPair<D>>& scratch) {
   auto key = [](const ProximityPair<D>& p) {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32 | static_cast<std::uint32_t>(p.b);
+    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32 |
+           static_cast<std::uint32_t>(p.b);
   };
   bool sorted = true;
   for (std::size_t i = 1; i < out.size() && sorted; ++i) sorted = key(out[i - 1]) < key(out[i]);

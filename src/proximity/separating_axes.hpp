@@ -151,8 +151,10 @@ inline double distance_lower_bound(const Simplex<D, KA>& a, const Simplex<D, KB>
   Vec<D> g = Vec<D>::Zero();
   for (int k = 0; k < D; ++k) {
     double lo_a = a[0][k], hi_a = lo_a, lo_b = b[0][k], hi_b = lo_b;
-    for (int i = 1; i < KA; ++i) lo_a = std::min(lo_a, a[i][k]), hi_a = std::max(hi_a, a[i][k]), sum += a[i][k];
-    for (int j = 1; j < KB; ++j) lo_b = std::min(lo_b, b[j][k]), hi_b = std::max(hi_b, b[j][k]), sum += b[j][k];
+    for (int i = 1; i < KA; ++i)
+      lo_a = std::min(lo_a, a[i][k]), hi_a = std::max(hi_a, a[i][k]), sum += a[i][k];
+    for (int j = 1; j < KB; ++j)
+      lo_b = std::min(lo_b, b[j][k]), hi_b = std::max(hi_b, b[j][k]), sum += b[j][k];
     sum += lo_a + lo_b;
     // The signed per-axis separation: its direction is an axis as good as the boxes' gap.
     if (lo_b - hi_a > 0) g[k] = lo_b - hi_a;

@@ -126,7 +126,8 @@ void check_gl(const char* where) {
   GLenum first = GL_NO_ERROR;
   for (GLenum e; (e = glGetError()) != GL_NO_ERROR;)
     if (first == GL_NO_ERROR) first = e;
-  if (first != GL_NO_ERROR) throw Error(std::string("OpenGL error ") + std::to_string(first) + " in " + where);
+  if (first != GL_NO_ERROR)
+    throw Error(std::string("OpenGL error ") + std::to_string(first) + " in " + where);
 }
 
 RenderTarget::RenderTarget(int width, int height, int samples) : width_(width), height_(height) {

@@ -101,8 +101,9 @@ struct GpuMesh {
     constexpr GLsizei stride = 9 * sizeof(float);
     for (GLuint a = 0; a < 3; ++a) {
       glEnableVertexAttribArray(a);
-      glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<const void*>(static_cast<std::uintptr_t>(3 * a * sizeof(float))));
+      glVertexAttribPointer(
+          a, 3, GL_FLOAT, GL_FALSE, stride,
+          reinterpret_cast<const void*>(static_cast<std::uintptr_t>(3 * a * sizeof(float))));
     }
     glBindVertexArray(0);
   }

@@ -85,7 +85,8 @@ TEST(AsyncSimulation, ASlowSimulationNeverBlocksTheHapticSide) {
     sim.set_external_force(0, Vec3(1, 0, 0));
     sim.step(1e-3);
     (void)sim.shadow_position(0);
-    worst_us = std::max(worst_us, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    worst_us = std::max(
+        worst_us, std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   EXPECT_LT(worst_us, 1000) << "the haptic side only swaps buffers";

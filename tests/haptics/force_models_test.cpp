@@ -130,8 +130,9 @@ TYPED_TEST(ForceModels, NavigationSpringsTowardThePredictedProjection) {
   on[0] = 0.002;
   Vec<D> along = Vec<D>::Zero();
   along[0] = 0.1;
-  EXPECT_LT((navigation_force<D>(on, along, rate, project, spring) - (spring.k / rate - spring.b) * along).norm(),
-            1e-12);
+  EXPECT_LT(
+      (navigation_force<D>(on, along, rate, project, spring) - (spring.k / rate - spring.b) * along).norm(),
+      1e-12);
   EXPECT_LT(navigation_force<D>(on, along, rate, project, DampedSpring{400, 0.4}).norm(), 1e-12);
 }
 

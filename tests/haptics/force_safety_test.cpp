@@ -143,7 +143,8 @@ TEST(ForceSafety, NeverExceedsLimitsOnRandomInput) {
     ev.deadline_missed = rnd() > 0.98;
     ev.scene_reset = rnd() > 0.995;
     ev.device_connected = rnd() > -0.99;
-    const Vec3 req(10 * rnd(), 10 * rnd(), rnd() > 0.99 ? std::numeric_limits<double>::quiet_NaN() : 10 * rnd());
+    const Vec3 req(10 * rnd(), 10 * rnd(),
+                   rnd() > 0.99 ? std::numeric_limits<double>::quiet_NaN() : 10 * rnd());
     const Vec3 out = s.apply(req, ev, kDt);
     ASSERT_TRUE(out.allFinite());
     ASSERT_LE(out.norm(), 3.3 + 1e-12);

@@ -38,7 +38,8 @@ std::unique_ptr<RubberBandScene> cloth_band() {
   b.add_body(cloth(6, 0.06));
   World<4> world(b.build());
   world.pin(0);
-  auto scene = std::make_unique<RubberBandScene>(std::make_unique<WorldSimulation<4>>(std::move(world), Frame<4>(), 1.0));
+  auto scene = std::make_unique<RubberBandScene>(
+      std::make_unique<WorldSimulation<4>>(std::move(world), Frame<4>(), 1.0));
   scene->set_param(RubberBandScene::kHold, 1);
   return scene;
 }

@@ -88,8 +88,10 @@ TEST(RubberBandScene, StableOnTheSimulatedArm) {
   for (int i = 0; i < ticks; ++i) {
     loop.run_ticks(1);
     const auto& world = static_cast<const WorldSimulation<4>&>(rb->simulation()).world();
-    const double band = 0.5 * 150 * (a->true_position() - rb->simulation().shadow_position(vertex)).squaredNorm();
-    max_energy = std::max(max_energy, a->mechanical_energy() + world.kinetic_energy() + world.spring_energy() + band);
+    const double band =
+        0.5 * 150 * (a->true_position() - rb->simulation().shadow_position(vertex)).squaredNorm();
+    max_energy =
+        std::max(max_energy, a->mechanical_energy() + world.kinetic_energy() + world.spring_energy() + band);
     if (i >= ticks - 300) {
       sum_v2 += a->true_velocity().squaredNorm();
       ++n;

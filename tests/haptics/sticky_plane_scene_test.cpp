@@ -19,7 +19,8 @@ struct PlaneRun {
   double final_offset = 0;     // m, |z| of the stylus at the end
 };
 
-// The stylus starts on the plane; the hand presses 3 mm through it, draws a 2 cm circle for 2 s, then rests for 1.5 s.
+// The stylus starts on the plane; the hand presses 3 mm through it, draws a 2 cm circle for 2 s, then rests
+// for 1.5 s.
 PlaneRun run_sticky_plane(double h, double kd) {
   auto arm = std::make_unique<SimulatedArm>();
   SimulatedArm* a = arm.get();

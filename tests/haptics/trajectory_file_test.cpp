@@ -64,7 +64,8 @@ TEST(TrajectoryFile, ErrorsNameFileAndLine) {
   EXPECT_NE(bad_number.find("bad.traj:3:"), std::string::npos) << bad_number;
   EXPECT_NE(bad_number.find("'x'"), std::string::npos) << bad_number;
   EXPECT_NE(parse_error_of(head + "tick 0 0 0 1 2 3\n").find("needs 15 values"), std::string::npos);
-  EXPECT_NE(parse_error_of(head + "tick 0 0 0 nan 0 0 0 0 0 0 0 0 0 0 0\n").find("non-finite"), std::string::npos);
+  EXPECT_NE(parse_error_of(head + "tick 0 0 0 nan 0 0 0 0 0 0 0 0 0 0 0\n").find("non-finite"),
+            std::string::npos);
   EXPECT_NE(parse_error_of(head + "wobble 3\n").find("unknown keyword 'wobble'"), std::string::npos);
   EXPECT_NE(parse_error_of(head + "rate 0\n").find("rate must be"), std::string::npos);
   EXPECT_NE(parse_error_of(head).find("no tick lines"), std::string::npos);

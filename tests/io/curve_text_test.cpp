@@ -36,7 +36,8 @@ TEST(CurveText, SeveralBlankLinesAreOneSeparator) {
 }
 
 TEST(CurveText, OpenDirectiveAlsoEndsTheCurrentComponent) {
-  const Shape shape = parse_curve_text("0 0 0\n1 0 0\n#! open\n2 0 0\n3 0 0\n#! closed\n4 0 0\n5 0 0\n", "mem");
+  const Shape shape =
+      parse_curve_text("0 0 0\n1 0 0\n#! open\n2 0 0\n3 0 0\n#! closed\n4 0 0\n5 0 0\n", "mem");
   const auto& c = std::get<Curve<3>>(shape);
   ASSERT_EQ(c.components.size(), 3u);
   EXPECT_TRUE(c.components[0].closed);

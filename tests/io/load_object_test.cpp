@@ -16,10 +16,12 @@ TEST(LoadObject, FilesByExtension) {
   EXPECT_EQ(a.name, "tetra");
   EXPECT_FALSE(a.generator.has_value());
   EXPECT_FALSE(a.source_path.empty());
-  EXPECT_TRUE(std::holds_alternative<Surface<4>>(load_object((data_dir() / "square_4d.4off").string()).shape));
+  EXPECT_TRUE(
+      std::holds_alternative<Surface<4>>(load_object((data_dir() / "square_4d.4off").string()).shape));
   EXPECT_TRUE(std::holds_alternative<Curve<3>>(load_object((data_dir() / "trefoil.vect").string()).shape));
   EXPECT_TRUE(std::holds_alternative<Curve<4>>(load_object((data_dir() / "link_4d.4vect").string()).shape));
-  EXPECT_TRUE(std::holds_alternative<Curve<3>>(load_object((data_dir() / "two_components.txt").string()).shape));
+  EXPECT_TRUE(
+      std::holds_alternative<Curve<3>>(load_object((data_dir() / "two_components.txt").string()).shape));
 }
 
 TEST(LoadObject, ExtensionsAreCaseInsensitive) {
@@ -63,7 +65,8 @@ TEST(LoadObject, SceneOrObject) {
   ASSERT_EQ(a.objects.size(), 1u);
   EXPECT_EQ(std::get<Surface<4>>(a.objects[0].shape).vertices.size(), 64u);
   test::TempDir dir;
-  const auto file = dir.write("s.JSON", R"({"version": 1, "objects": [{"generator": "sphere", "params": {"n": 4}}]})");
+  const auto file =
+      dir.write("s.JSON", R"({"version": 1, "objects": [{"generator": "sphere", "params": {"n": 4}}]})");
   EXPECT_EQ(load_scene_or_object(file.string()).objects.size(), 1u);
   EXPECT_THROW(load_scene_or_object((dir / "none.json").string()), ParseError);
 }

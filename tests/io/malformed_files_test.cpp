@@ -96,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(SampleFiles, Malformed, ::testing::ValuesIn(kBadFiles),
 
 TEST(MalformedFiles, EverySampleIsListed) {
   std::size_t listed = std::size(kBadFiles), on_disk = 0;
-  for (const auto& e : std::filesystem::directory_iterator(test::data_dir() / "bad")) on_disk += e.is_regular_file();
+  for (const auto& e : std::filesystem::directory_iterator(test::data_dir() / "bad"))
+    on_disk += e.is_regular_file();
   EXPECT_EQ(on_disk, listed) << "a file in tests/data/io/bad has no expectation (or one is missing)";
 }
 

@@ -94,7 +94,8 @@ Surface<D> random_surface(int nv, int nt, unsigned seed) {
   std::uniform_int_distribution<int> idx(0, nv - 1);
   while (static_cast<int>(s.triangles.size()) < nt) {
     const Triangle t{idx(rng), idx(rng), idx(rng)};
-    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) s.triangles.push_back(t);  // the reader drops degenerate ones
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+      s.triangles.push_back(t);  // the reader drops degenerate ones
   }
   return s;
 }

@@ -17,8 +17,9 @@ namespace {
 // Mutations that hit the weak spots of text formats: counts, signs, exponents, separators,
 // truncation, binary bytes, duplicated and deleted spans.
 std::string mutate(std::string s, std::mt19937& rng) {
-  static const char* const kSnippets[] = {"-", "9", "99999999999", "e999", "nan", "inf", " ", "\n", "#",
-                                          "#!", "-1", "0", ".", "1e-400", "\"", "{", "]", ",", "\x00", "\xff"};
+  static const char* const kSnippets[] = {"-",  "9", "99999999999", "e999", "nan",  "inf", " ",
+                                          "\n", "#", "#!",          "-1",   "0",    ".",   "1e-400",
+                                          "\"", "{", "]",           ",",    "\x00", "\xff"};
   const int edits = 1 + static_cast<int>(rng() % 4);
   for (int e = 0; e < edits; ++e) {
     const std::size_t n = s.size();
@@ -53,7 +54,8 @@ struct Counts {
   int rejected = 0;
 };
 
-Counts fuzz(const std::string& valid, int rounds, unsigned seed, const std::function<void(const std::string&)>& read) {
+Counts fuzz(const std::string& valid, int rounds, unsigned seed,
+            const std::function<void(const std::string&)>& read) {
   std::mt19937 rng(seed);
   Counts c;
   for (int i = 0; i < rounds; ++i) {

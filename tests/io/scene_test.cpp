@@ -84,12 +84,16 @@ TEST(Scene, RotationsApplyInTheOrderWritten) {
 
 TEST(Scene, MatrixFrameIsReadAndChecked) {
   const Scene s = parse_scene(
-      R"({"version": 1, "frame": {"matrix": [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})", "m.json");
+      R"({"version": 1, "frame": {"matrix": [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]}})",
+      "m.json");
   EXPECT_EQ(s.frame.matrix()(1, 0), 1.0);
   EXPECT_EQ(s.frame.matrix()(0, 1), -1.0);
-  test::expect_parse_error([] {
-    parse_scene(R"({"version": 1, "frame": {"matrix": [[-1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}})", "r.json");
-  }, 0, "reflection");
+  test::expect_parse_error(
+      [] {
+        parse_scene(R"({"version": 1, "frame": {"matrix": [[-1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}})",
+                    "r.json");
+      },
+      0, "reflection");
   test::expect_parse_error([] {
     parse_scene(R"({"version": 1, "frame": {"matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0]]}})", "r.json");
   }, 0, "4 rows");
@@ -141,7 +145,8 @@ TEST(Scene, AbsurdValuesAreRejected) {
       {R"({"version": 1, "objects": [{"name": "x"}]})", "exactly one of"},
       {R"({"version": 1, "objects": [{"generator": "sphere", "path": "a.off"}]})", "exactly one of"},
       {R"({"version": 1, "objects": [{"path": "a.off", "params": {}}]})", "only allowed with"},
-      {R"({"version": 1, "objects": [{"generator": "sphere", "params": {"n": null}}]})", "objects[0].params.n"},
+      {R"({"version": 1, "objects": [{"generator": "sphere", "params": {"n": null}}]})",
+       "objects[0].params.n"},
       {R"({"version": 1, "objects": [{"generator": "sphere", "offset": [1, 2]}]})", "3 or 4 numbers"},
       {R"({"version": 1, "objects": [{"generator": "sphere", "params": {"n": 1e400}}]})", "overflow"},
   };
@@ -152,8 +157,9 @@ TEST(Scene, AbsurdValuesAreRejected) {
 }
 
 TEST(Scene, JsonSyntaxErrorsCarryTheLine) {
-  test::expect_parse_error([] { parse_scene("{\n\"version\": 1,\n\n\"view\": {\"fov_deg\": 40,,}\n}", "s.json"); }, 4,
-                           "s.json:4:");
+  test::expect_parse_error(
+      [] { parse_scene("{\n\"version\": 1,\n\n\"view\": {\"fov_deg\": 40,,}\n}", "s.json"); }, 4,
+      "s.json:4:");
   test::expect_parse_error([] { parse_scene("", "e.json"); }, 1, "JSON syntax error");
 }
 
@@ -222,7 +228,8 @@ TEST(Scene, SaveThenLoadRoundTrip) {
   ASSERT_TRUE(r.objects[0].generator.has_value());
   EXPECT_EQ(r.objects[0].generator->params, s.objects[0].generator->params);
   EXPECT_EQ(r.objects[0].colour, s.objects[0].colour);
-  EXPECT_EQ(std::get<Surface<4>>(r.objects[0].shape).vertices, std::get<Surface<4>>(s.objects[0].shape).vertices);
+  EXPECT_EQ(std::get<Surface<4>>(r.objects[0].shape).vertices,
+            std::get<Surface<4>>(s.objects[0].shape).vertices);
   EXPECT_EQ(r.objects[1].name, "tetra");
   EXPECT_EQ(std::filesystem::path(r.objects[1].source_path), (dir / "tetra.off").lexically_normal());
   EXPECT_EQ(std::get<Surface<3>>(r.objects[1].shape).vertices, std::get<Surface<3>>(loaded.shape).vertices);

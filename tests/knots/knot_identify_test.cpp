@@ -178,8 +178,9 @@ TEST(KnotIdentify, CompositeKnotsFactorise) {
   EXPECT_EQ(square.kind, KnotKind::kComposite) << square.name;
   ASSERT_FALSE(square.candidates.empty());
   EXPECT_NE(square.candidates[0][0].chirality, square.candidates[0][1].chirality);
-  EXPECT_EQ(compare_knots(braid_closure(3, {1, 1, 1, 2, 2, 2}), braid_closure(3, {1, 1, 1, -2, -2, -2})).verdict,
-            Sameness::kDifferent);
+  EXPECT_EQ(
+      compare_knots(braid_closure(3, {1, 1, 1, 2, 2, 2}), braid_closure(3, {1, 1, 1, -2, -2, -2})).verdict,
+      Sameness::kDifferent);
 }
 
 TEST(KnotIdentify, LinksByComponentsAndLinkingNumbers) {

@@ -50,7 +50,8 @@ TEST(Polynomial, FingerprintIsMultiplicative) {
 }
 
 TEST(Polynomial, ModularInverse) {
-  for (std::uint64_t a : {std::uint64_t{2}, std::uint64_t{12345}, modp::kP - 1, std::uint64_t{0x1234567890abc}})
+  for (std::uint64_t a :
+       {std::uint64_t{2}, std::uint64_t{12345}, modp::kP - 1, std::uint64_t{0x1234567890abc}})
     EXPECT_EQ(modp::mul(a, modp::inv(a)), 1u);
 }
 

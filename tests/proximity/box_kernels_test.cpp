@@ -97,7 +97,8 @@ TEST(BoxKernels, OutwardFloatBoxesHoldTheirBoxesAndAvxGivesThePortableBits) {
     prox_detail::cell_boxes_portable<4, 3, 1>({x}, cells, boxes);
     boxes[round % boxes.size()].hi[round % 4] = std::numeric_limits<double>::quiet_NaN();
     std::vector<int> order(boxes.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>((k * 37 + round) % order.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      order[k] = static_cast<int>((k * 37 + round) % order.size());
     std::vector<Box<4>> prim(order.size()), prim_fast(order.size());
     std::vector<FloatBox> pf(order.size()), pf_fast(order.size());
     gather_outward_portable<4>(boxes, order, prim.data(), pf.data());

@@ -55,7 +55,8 @@ void check_topology(const std::vector<Cell<K>>& cells, int nv) {
     std::set<int> seen;
     t.for_each_topological_neighbour(cells[a], [&](int c) { seen.insert(c); });
     for (int b = 0; b < static_cast<int>(cells.size()); ++b) {
-      const bool near = share_vertex<K, K>(cells[a], cells[b]) || joined_by_edge<K>(cells[a], cells[b], edges);
+      const bool near =
+          share_vertex<K, K>(cells[a], cells[b]) || joined_by_edge<K>(cells[a], cells[b], edges);
       EXPECT_EQ(seen.count(b) > 0, near) << a << " " << b;
     }
   }

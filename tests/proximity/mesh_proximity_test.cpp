@@ -241,7 +241,8 @@ std::vector<Vec4> folded_grid(int n, double phase, double stretch, double fold, 
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const double u = double(i) / (n - 1), v = double(j) / (n - 1);
-      x.push_back(Vec4(u + stretch * std::sin(7 * v + 2 * u + phase), v + stretch * std::sin(6 * u - 3 * v + phase),
+      x.push_back(Vec4(u + stretch * std::sin(7 * v + 2 * u + phase),
+                       v + stretch * std::sin(6 * u - 3 * v + phase),
                        fold * std::sin(9 * u + phase) * std::cos(8 * v),
                        fold * std::cos(7 * u - 5 * v) * std::sin(6 * v + u + w_rate * phase)));
     }
@@ -332,7 +333,8 @@ TEST(MeshProximity, GridStepCandidatesCoverEveryHitThroughStoppedSteps) {
           if (!earliest_contact<4, 3, 3>(a0, a1, b0, b1, opt).hit) continue;
           ++hits;
           const auto& t = q.topology();
-          ring_hits += std::binary_search(t.ring.begin() + t.ring_offset[a], t.ring.begin() + t.ring_offset[a + 1], b);
+          ring_hits +=
+              std::binary_search(t.ring.begin() + t.ring_offset[a], t.ring.begin() + t.ring_offset[a + 1], b);
           ASSERT_TRUE(offered.count({a, b})) << "step " << step << " missed " << a << "," << b;
         }
     }

@@ -55,7 +55,9 @@ TEST(Camera, ViewPutsEyeAtOriginAndTargetStraightAhead) {
   EXPECT_NEAR((v * c.eye().homogeneous()).head<3>().norm(), 0, 1e-12);
   EXPECT_NEAR(((v * s.centre.homogeneous()).head<3>() - Vec3(0, 0, -6)).norm(), 0, 1e-12);
   EXPECT_NEAR(c.view_depth(s.centre), 6, 1e-12);
-  EXPECT_NEAR((v.topLeftCorner<3, 3>() * v.topLeftCorner<3, 3>().transpose() - Eigen::Matrix3d::Identity()).norm(), 0, 1e-12);
+  EXPECT_NEAR(
+      (v.topLeftCorner<3, 3>() * v.topLeftCorner<3, 3>().transpose() - Eigen::Matrix3d::Identity()).norm(), 0,
+      1e-12);
 }
 
 TEST(Camera, IdentityLooksDownMinusZSoLargerZIsNearer) {
