@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <set>
 #include <string>
 
@@ -47,8 +46,8 @@ Ball ball_of(const std::vector<Vec4>& u, const std::vector<int>& vertices) {
 void run(const Options& o) {
   const int n = o.n;
   const double delta = grid_delta(n), radius = delta * (1 + o.skin);
-  // Unlisted pairs farther than this at the build cannot reach δ before the global bound fails
-  // three times over: the exact search looks no further.
+  // Unlisted pairs farther than this at the build cannot reach δ until 2ρ has grown to five times
+  // what ends the global bound's list: the exact search looks no further (and says ">=" past it).
   const double horizon = radius + 4 * (radius - delta);
   const std::vector<Cell<3>> cells = grid_triangles(n);
   const int nc = static_cast<int>(cells.size());
