@@ -48,6 +48,18 @@ std::string shadow_text(const ShadowIntersections& s) {
   return o.str();
 }
 
+// Sheets of surfaces in R^3 meet along curves, not at points: seen straight on, lifted surfaces
+// are their own shadow, whose curves are exactly those. Adds them to o; returns the text line.
+std::string curves_in_r3(const std::string& label, std::size_t pairs,
+                         const ShadowIntersections& in3, nlohmann::json& o) {
+  o["true_intersection_curves"] = in3.curves.size();
+  o["true_intersection_length"] = in3.total_length;
+  std::ostringstream t;
+  t << "  " << label << " in R^3: " << pairs << " triangle pair(s), " << in3.curves.size()
+    << " curve(s) of total length " << std::setprecision(6) << in3.total_length << "\n";
+  return t.str();
+}
+
 Surface<4> as_4d_surface(const Shape& shape) {
   if (const auto* s4 = std::get_if<Surface<4>>(&shape)) return *s4;
   return lift_to_4d(std::get<Surface<3>>(shape));
@@ -63,28 +75,39 @@ std::size_t run_check(const CheckOptions& opt) {
   nlohmann::json out = {{"input", opt.input}, {"objects", nlohmann::json::array()},
                         {"between", nlohmann::json::array()}};
   std::size_t true_points = 0;
-  std::vector<std::pair<std::string, Surface<4>>> surfaces;
+  struct Checked {
+    std::string name;
+    int dim = 4;
+    Surface<4> surface;
+  };
+  std::vector<Checked> surfaces;
   for (const SceneObject& obj : scene.objects) {
     if (is_surface(obj.shape)) {
       Surface<4> s = as_4d_surface(obj.shape);
       const auto self = self_intersections<4>(s, iopt);
       const ShadowIntersections shadow = shadow_intersections(s, scene.frame);
       true_points += self.points.size();
-      out["objects"].push_back({{"name", obj.name},
-                                {"kind", "surface"},
-                                {"dim", ambient_dim(obj.shape)},
-                                {"vertices", s.vertices.size()},
-                                {"triangles", s.triangles.size()},
-                                {"true_intersection_pairs", self.pairs.size()},
-                                {"true_intersection_points", self.points.size()},
-                                {"shadow", shadow_json(shadow)}});
+      const int dim = ambient_dim(obj.shape);
+      nlohmann::json o = {{"name", obj.name},
+                          {"kind", "surface"},
+                          {"dim", dim},
+                          {"vertices", s.vertices.size()},
+                          {"triangles", s.triangles.size()},
+                          {"true_intersection_pairs", self.pairs.size()},
+                          {"true_intersection_points", self.points.size()},
+                          {"shadow", shadow_json(shadow)}};
+      const std::string own =
+          dim == 3 ? curves_in_r3("true self-intersections", self.pairs.size(),
+                                  shadow_intersections(s, Frame<4>()), o)
+                   : "  true 4D self-intersections: " + std::to_string(self.pairs.size()) +
+                         " triangle pair(s), " + std::to_string(self.points.size()) +
+                         " distinct point(s)\n";
+      out["objects"].push_back(std::move(o));
       if (!opt.json)
-        std::cout << "object '" << obj.name << "' (surface in R^" << ambient_dim(obj.shape) << ", "
+        std::cout << "object '" << obj.name << "' (surface in R^" << dim << ", "
                   << s.triangles.size() << " triangles)\n"
-                  << "  true 4D self-intersections: " << self.pairs.size() << " triangle pair(s), "
-                  << self.points.size() << " distinct point(s)\n"
-                  << "  shadow intersection curves: " << shadow_text(shadow);
-      surfaces.emplace_back(obj.name, std::move(s));
+                  << own << "  shadow intersection curves: " << shadow_text(shadow);
+      surfaces.push_back({obj.name, dim, std::move(s)});
     } else {
       // Curves: segments of the same curve that touch, and crossings of the 2D/3D shadow.
       std::size_t pairs = 0, points = 0, crossings = 0;
@@ -137,21 +160,27 @@ std::size_t run_check(const CheckOptions& opt) {
   }
   for (std::size_t i = 0; i < surfaces.size(); ++i)
     for (std::size_t j = i + 1; j < surfaces.size(); ++j) {
-      const auto& [na, a] = surfaces[i];
-      const auto& [nb, b] = surfaces[j];
+      const auto& [na, da, a] = surfaces[i];
+      const auto& [nb, db, b] = surfaces[j];
       const auto meet = surface_intersections<4>(a, b, iopt);
       const ShadowIntersections shadow = shadow_intersections(a, b, scene.frame);
       true_points += meet.points.size();
-      out["between"].push_back({{"a", na},
-                                {"b", nb},
-                                {"true_intersection_pairs", meet.pairs.size()},
-                                {"true_intersection_points", meet.points.size()},
-                                {"shadow", shadow_json(shadow)}});
+      nlohmann::json o = {{"a", na},
+                          {"b", nb},
+                          {"true_intersection_pairs", meet.pairs.size()},
+                          {"true_intersection_points", meet.points.size()},
+                          {"shadow", shadow_json(shadow)}};
+      const std::string both =
+          da == 3 && db == 3
+              ? curves_in_r3("true intersections", meet.pairs.size(),
+                             shadow_intersections(a, b, Frame<4>()), o)
+              : "  true 4D intersections: " + std::to_string(meet.pairs.size()) +
+                    " triangle pair(s), " + std::to_string(meet.points.size()) +
+                    " distinct point(s)\n";
+      out["between"].push_back(std::move(o));
       if (!opt.json)
         std::cout << "objects '" << na << "' and '" << nb << "'\n"
-                  << "  true 4D intersections: " << meet.pairs.size() << " triangle pair(s), "
-                  << meet.points.size() << " distinct point(s)\n"
-                  << "  shadow intersection curves: " << shadow_text(shadow);
+                  << both << "  shadow intersection curves: " << shadow_text(shadow);
     }
   out["true_intersection_points"] = true_points;
   out["embedded"] = true_points == 0;
@@ -159,8 +188,8 @@ std::size_t run_check(const CheckOptions& opt) {
     std::cout << out.dump(2) << "\n";
   else
     std::cout << (true_points == 0 ? "result: embedded, no true intersections\n"
-                                   : "result: " + std::to_string(true_points) +
-                                         " true intersection point(s)\n");
+                                   : "result: not embedded: " + std::to_string(true_points) +
+                                         " true intersection(s)\n");
   return true_points;
 }
 
