@@ -1,6 +1,7 @@
 // `shadow4d check <mesh.4off|scene.json|generator-call>`: reports true 4D self-intersections
 // and the shadow's intersection curves (count, length, shadow-only vs true) per surface object and
 // between objects. Exit code 0: embedded; 2: true intersections exist; 1: error.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -204,10 +205,14 @@ const CommandRegistrar kCheck(
       sub.add_option("--rotate", opt->rotate,
                      "rotations of the 4D view, degrees, in order, e.g. xw=30,yz=10");
       sub.add_flag("--json", opt->json, "machine-readable output");
-      sub.add_option("--tolerance", opt->tolerance,
-                     "distance below which primitives count as meeting (scene units; default "
-                     "1e-9 of the object's size)");
-      sub.callback([opt] {
+      const CLI::Option* tolerance = sub.add_option(
+          "--tolerance", opt->tolerance,
+          "distance below which primitives count as meeting (scene units; default 1e-9 of the "
+          "object's size)");
+      sub.callback([opt, tolerance] {
+        // Negative stands for the default inside: a user's negative or NaN is a mistake to say.
+        if (tolerance->count() > 0 && !(opt->tolerance >= 0 && std::isfinite(opt->tolerance)))
+          throw Error("check: --tolerance must be a finite distance >= 0 (scene units)");
         if (run_check(*opt) > 0) throw ExitStatus{2};
       });
     });
