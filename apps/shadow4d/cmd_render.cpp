@@ -30,8 +30,10 @@ const CommandRegistrar kRender(
         Scene scene = load_scene_or_object(args->input);
         args->view.apply(scene);
         const auto [w, h] = args->view.parsed_size();
-        write_png(render_offscreen(scene, w, h), args->out);
+        IntersectionSummary drawn;
+        write_png(render_offscreen(scene, w, h, &drawn), args->out);
         std::cout << args->out << "\n";
+        if (drawn.computed) std::cout << "intersections: " << intersection_text(drawn) << "\n";
       });
     });
 

@@ -16,6 +16,8 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
   app.add_flag("--no-depth-colour", no_depth_colour, "plain colour instead of depth colouring");
   app.add_flag("--wireframe", wireframe, "draw triangle edges");
   app.add_flag("--shadow", shadow, "flat-shaded shadow drawing (no lighting)");
+  app.add_flag("--intersections", intersections,
+               "draw the shadow's intersection curves: yellow shadow-only, magenta true 4D");
   app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
 }
 
@@ -49,6 +51,7 @@ void ViewOptions::apply(Scene& scene) const {
   if (no_depth_colour) scene.view.depth_colour = false;
   if (wireframe) scene.view.wireframe = true;
   if (shadow) scene.view.shadow = true;
+  if (intersections) scene.view.intersections = true;
   if (tube_radius) {
     if (!std::isfinite(*tube_radius) || *tube_radius <= 0 || *tube_radius > 100)
       throw Error("--tube-radius must be a positive number (scene units)");

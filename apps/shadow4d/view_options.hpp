@@ -17,6 +17,7 @@ struct ViewOptions {
   bool no_depth_colour = false;
   bool wireframe = false;
   bool shadow = false;
+  bool intersections = false;
   std::optional<double> tube_radius;
 
   // Adds --size only when `with_size`.

@@ -120,6 +120,7 @@ int run_gui_app(const GuiOptions& options) {
       model.view.apply_to(model.scene);
       if (fw > 0 && fh > 0) {
         renderer.draw(model.scene, fw, fh);
+        model.intersections = renderer.intersections();
         if (model.want_screenshot) {  // the picture without the panels
           model.want_screenshot = false;
           save_shot(renderer.read_pixels(fw, fh), model.screenshot_path, model);

@@ -125,6 +125,12 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();
   ImGui::Checkbox("flat shadow", &v.shadow);
+  ImGui::Checkbox("intersection curves", &v.intersections);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
+                      "apart in w), magenta where the surface truly meets itself in R^4");
+  if (v.intersections && model.intersections.computed)
+    ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
   float radius = static_cast<float>(v.tube_radius);
   if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
     v.tube_radius = radius;

@@ -7,6 +7,7 @@
 #include "app/file_browser.hpp"
 #include "app/view_state.hpp"
 #include "io/scene.hpp"
+#include "render/scene_geometry.hpp"
 
 namespace s4d {
 
@@ -20,6 +21,7 @@ struct GuiModel {
   std::string screenshot_path = "shadow4d-screenshot.png";
   int created = 0;             // counter for unique object names
   bool open_haptics = false;   // request from the menu: show the haptics panel (starts the loop)
+  IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
 };
 
 class Panels {

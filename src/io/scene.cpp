@@ -137,7 +137,7 @@ Frame<4> parse_frame(const Json& j, const Ctx& ctx) {
 ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   require_object(j, ctx);
   check_keys(j, ctx, {"trackball", "distance", "fov_deg", "depth_colour", "colour_map", "wireframe", "shadow",
-                      "tube_radius", "background"});
+                      "intersections", "tube_radius", "background"});
   ViewSettings v;
   if (j.contains("trackball")) {
     const auto q = numbers(j["trackball"], ctx.at("trackball"), {4});
@@ -157,6 +157,7 @@ ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   }
   if (j.contains("wireframe")) v.wireframe = boolean(j["wireframe"], ctx.at("wireframe"));
   if (j.contains("shadow")) v.shadow = boolean(j["shadow"], ctx.at("shadow"));
+  if (j.contains("intersections")) v.intersections = boolean(j["intersections"], ctx.at("intersections"));
   if (j.contains("tube_radius"))
     v.tube_radius = number_in(j["tube_radius"], ctx.at("tube_radius"), 0, 1e6, true);
   if (j.contains("background")) v.background = colour(j["background"], ctx.at("background"));

@@ -102,6 +102,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
   view["colour_map"] = std::string(colour_map_name(v.colour_map));
   view["wireframe"] = v.wireframe;
   view["shadow"] = v.shadow;
+  view["intersections"] = v.intersections;
   view["tube_radius"] = number(v.tube_radius);
   view["background"] = array(v.background, 3);
   root["view"] = std::move(view);

@@ -152,8 +152,9 @@ struct Renderer::Impl {
   int u_projection = program.uniform("u_projection");
   int u_mode = program.uniform("u_mode");
   int u_solid = program.uniform("u_solid");
-  std::vector<std::unique_ptr<GpuMesh>> meshes;
+  std::vector<std::unique_ptr<GpuMesh>> meshes;  // the objects', then the overlays'
   Camera camera;
+  IntersectionSummary intersections;
 };
 
 Renderer::Renderer() {
@@ -166,6 +167,8 @@ Renderer::~Renderer() = default;
 
 const Camera& Renderer::camera() const { return impl_->camera; }
 
+const IntersectionSummary& Renderer::intersections() const { return impl_->intersections; }
+
 // [SECTION] draw
 void Renderer::draw(const Scene& scene, int width, int height) {
   if (width < 1 || height < 1)
@@ -173,10 +176,14 @@ void Renderer::draw(const Scene& scene, int width, int height) {
   const SceneGeometry geometry = build_scene_geometry(scene, static_cast<double>(width) / height);
   Impl& r = *impl_;
   r.camera = geometry.camera;
+  r.intersections = geometry.intersections;
 
-  while (r.meshes.size() < geometry.objects.size()) r.meshes.push_back(std::make_unique<GpuMesh>());
-  r.meshes.resize(geometry.objects.size());  // frees buffers of removed objects
-  for (std::size_t i = 0; i < geometry.objects.size(); ++i) r.meshes[i]->upload(geometry.objects[i]);
+  const std::size_t count = geometry.objects.size() + geometry.overlays.size();
+  while (r.meshes.size() < count) r.meshes.push_back(std::make_unique<GpuMesh>());
+  r.meshes.resize(count);  // frees buffers of removed objects
+  for (std::size_t i = 0; i < count; ++i)
+    r.meshes[i]->upload(i < geometry.objects.size() ? geometry.objects[i]
+                                                     : geometry.overlays[i - geometry.objects.size()]);
 
   glViewport(0, 0, width, height);
   const Vec3f& bg = scene.view.background;
@@ -230,12 +237,14 @@ Image Renderer::read_pixels(int width, int height) const {
 }
 
 // [SECTION] offscreen
-Image render_offscreen(const Scene& scene, int width, int height) {
+Image render_offscreen(const Scene& scene, int width, int height,
+                       IntersectionSummary* intersections) {
   OffscreenContext context;
   RenderTarget target(width, height, 4);
   Renderer renderer;  // declared last: destroyed first, while the context is still current
   target.bind();
   renderer.draw(scene, width, height);
+  if (intersections) *intersections = renderer.intersections();
   return target.resolve_and_read();
 }
 

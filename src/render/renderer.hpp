@@ -8,6 +8,7 @@
 #include "io/image.hpp"
 #include "io/scene.hpp"
 #include "render/camera.hpp"
+#include "render/scene_geometry.hpp"
 
 namespace s4d {
 
@@ -26,6 +27,8 @@ class Renderer {
   // The camera of the last draw (identity-looking default before the first): lets the app map
   // the mouse to shadow space with exactly the matrices that were drawn.
   const Camera& camera() const;
+  // The intersection curves of the last draw (computed = false unless view.intersections).
+  const IntersectionSummary& intersections() const;
 
  private:
   struct Impl;
@@ -34,6 +37,8 @@ class Renderer {
 
 // Renders a scene without a display: EGL surfaceless (Mesa llvmpipe works without a GPU), into a
 // multisampled framebuffer object. Throws s4d::Error if no OpenGL 3.3 context can be made.
-Image render_offscreen(const Scene& scene, int width, int height);
+// `intersections`, when given, receives what Renderer::intersections() says of the drawing.
+Image render_offscreen(const Scene& scene, int width, int height,
+                       IntersectionSummary* intersections = nullptr);
 
 }  // namespace s4d

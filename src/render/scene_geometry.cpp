@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <type_traits>
+
+#include "proximity/shadow_intersections.hpp"
 
 namespace s4d {
 
@@ -88,7 +92,58 @@ void extend(DepthRange& r, double d) {
   }
 }
 
+// One overlay for the intersection curves of every R^4 surface with itself and with each other:
+// a thin tube per segment, in its class's colour, and a bead where the sheets truly meet.
+DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionSummary& sum) {
+  std::vector<const Surface<4>*> surfaces;
+  for (const SceneObject& obj : scene.objects)
+    if (const auto* s = std::get_if<Surface<4>>(&obj.shape)) surfaces.push_back(s);
+  DrawObject d;
+  d.surface = false;
+  TubeOptions line;
+  line.radius = radius;
+  line.sides = 8;
+  TubeOptions bead = line;
+  bead.radius = 2.5 * radius;
+  auto add = [&](const std::vector<Vec3>& pts, const TubeOptions& opt, const Vec3f& colour) {
+    append_mesh(d.mesh, tube_mesh(pts, false, opt), 0);
+    d.colours.resize(d.mesh.vertex_count(), colour);
+    d.depth.resize(d.mesh.vertex_count(), 0.0);
+  };
+  auto draw = [&](const ShadowIntersections& r) {
+    sum.curves += static_cast<int>(r.curves.size());
+    sum.shadow_only_curves += r.shadow_only_curves;
+    sum.true_curves += r.true_curves;
+    sum.coplanar_pairs += r.coplanar_pairs;
+    sum.length += r.total_length;
+    for (const ShadowSegment& s : r.segments) {
+      add({s.p0, s.p1}, line, s.true_intersection ? kTrueIntersectionColour : kShadowOnlyColour);
+      if (!s.true_intersection) continue;
+      ++sum.true_points;
+      const Vec3 along = (s.p1 - s.p0).norm() > 0 ? Vec3((s.p1 - s.p0).normalized()) : Vec3::UnitX();
+      add({s.meet - bead.radius * along, s.meet + bead.radius * along}, bead, kTrueIntersectionColour);
+    }
+  };
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    draw(shadow_intersections(*surfaces[i], scene.frame));
+    for (std::size_t j = i + 1; j < surfaces.size(); ++j)
+      draw(shadow_intersections(*surfaces[i], *surfaces[j], scene.frame));
+  }
+  d.mesh.source.assign(d.mesh.vertex_count(), 0);
+  sum.computed = true;
+  return d;
+}
+
 }  // namespace
+
+std::string intersection_text(const IntersectionSummary& s) {
+  std::ostringstream o;
+  o << s.curves << " curve(s), total length " << std::setprecision(4) << s.length << ": "
+    << s.shadow_only_curves << " shadow-only, " << s.true_curves << " true (" << s.true_points
+    << " true point(s))";
+  if (s.coplanar_pairs > 0) o << "; the view is not generic (sheets overlap in area): turn it";
+  return o.str();
+}
 
 Vec3f plain_colour(const SceneObject& object) {
   if (object.colour && object.colour->allFinite()) return object.colour->cwiseMax(0.f).cwiseMin(1.f);
@@ -155,6 +210,8 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     }
     g.objects.push_back(std::move(d));
   }
+  // Thinner than the curves' tubes, so a knotted ribbon's crossings do not hide its sheets.
+  if (view.intersections) g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
   return g;
 }
 

@@ -1,6 +1,7 @@
 // Everything the renderer draws for one frame, computed on the CPU from a Scene: meshes in the
 // 3D shadow space, the camera, and per-vertex depth colours. Pure data, testable without GL.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "io/scene.hpp"
@@ -25,8 +26,33 @@ struct DepthRange {
   bool empty() const { return !(hi >= lo); }
 };
 
+// Colours of the intersection curves of the shadow (view.intersections): where the two sheets
+// are apart in w the crossing is only in the shadow; where their depths agree the surface truly
+// meets itself in R^4 (the paper's depth test), marked again by a bead.
+inline const Vec3f kShadowOnlyColour{1.0f, 0.82f, 0.10f};
+inline const Vec3f kTrueIntersectionColour{1.0f, 0.10f, 0.85f};
+
+// What the drawn intersection curves are, summed over the R^4 surfaces (each with itself and
+// each pair): for the view panel and the render command.
+struct IntersectionSummary {
+  bool computed = false;  // view.intersections was on
+  int curves = 0;
+  int shadow_only_curves = 0;
+  int true_curves = 0;
+  int true_points = 0;     // segments carrying a true 4D intersection (beads drawn)
+  int coplanar_pairs = 0;  // sheets overlapping in area: the view is not generic
+  double length = 0;
+};
+
+// "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s))", and a note when the
+// view is not generic.
+std::string intersection_text(const IntersectionSummary& s);
+
 struct SceneGeometry {
   std::vector<DrawObject> objects;  // one per scene object, in order (empty meshes kept)
+  // Drawn over the objects: the shadow's intersection curves when view.intersections is on.
+  std::vector<DrawObject> overlays;
+  IntersectionSummary intersections;
   BoundingSphere bounds;            // of every drawn vertex
   Camera camera;
   // w over all R^4 objects together, so colours compare across objects; view depth over all R^3
@@ -39,7 +65,9 @@ struct SceneGeometry {
 // objects as they are, turns curves into tubes of radius view.tube_radius, fits the camera
 // (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
 // and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
-// colour or a neutral grey. Throws s4d::Error on a mesh with out-of-range triangle indices.
+// colour or a neutral grey. With view.intersections, adds the intersection curves of the R^4
+// surfaces' shadow as thin tubes (overlays). Throws s4d::Error on a mesh with out-of-range
+// triangle indices.
 SceneGeometry build_scene_geometry(const Scene& scene, double aspect);
 
 // The colour of an object when depth colouring is off (or the map is kGrey).

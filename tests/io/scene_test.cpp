@@ -105,7 +105,8 @@ TEST(Scene, MatrixFrameIsReadAndChecked) {
 TEST(Scene, ViewAndPhysicsFields) {
   const Scene s = parse_scene(R"({"version": 1,
     "view": {"trackball": [2, 0, 0, 0], "distance": 5, "fov_deg": 50, "depth_colour": false,
-             "colour_map": "rainbow", "wireframe": true, "shadow": true, "tube_radius": 0.05,
+             "colour_map": "rainbow", "wireframe": true, "shadow": true, "intersections": true,
+             "tube_radius": 0.05,
              "background": [1, 1, 1]},
     "physics": {"time_step": 0.002, "thickness": 0.01, "gravity": [0, -9.81, 0], "mass": 0.01,
                 "stiffness": 80, "beta": 0.5, "damping": 0.1, "friction": 0, "integrator": "explicit-euler"}})",
@@ -117,6 +118,7 @@ TEST(Scene, ViewAndPhysicsFields) {
   EXPECT_EQ(s.view.colour_map, ColourMap::kRainbow);
   EXPECT_TRUE(s.view.wireframe);
   EXPECT_TRUE(s.view.shadow);
+  EXPECT_TRUE(s.view.intersections);
   EXPECT_EQ(s.view.tube_radius, 0.05);
   EXPECT_EQ(s.view.background, Vec3f(1, 1, 1));
   EXPECT_EQ(s.physics.time_step, 0.002);
@@ -212,6 +214,7 @@ TEST(Scene, SaveThenLoadRoundTrip) {
   s.frame.rotate(*parse_plane("yz", 4), -1.1);
   s.view.colour_map = ColourMap::kGrey;
   s.view.tube_radius = 0.07;
+  s.view.intersections = true;
   s.view.trackball = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitY()));
   s.physics.gravity = Vec4(0, 0, 0, -9.81);
   s.physics.stiffness = 123.5;
@@ -243,6 +246,7 @@ TEST(Scene, SaveThenLoadRoundTrip) {
   EXPECT_LT((r.frame.matrix() - s.frame.matrix()).cwiseAbs().maxCoeff(), 1e-14);
   EXPECT_EQ(r.view.colour_map, ColourMap::kGrey);
   EXPECT_EQ(r.view.tube_radius, 0.07);
+  EXPECT_TRUE(r.view.intersections);
   EXPECT_LT(r.view.trackball.angularDistance(s.view.trackball), 1e-14);
   EXPECT_EQ(r.view.background, s.view.background);
   EXPECT_EQ(r.physics.gravity, s.physics.gravity);

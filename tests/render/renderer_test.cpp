@@ -50,6 +50,32 @@ TEST(RenderOffscreen, BadSizeThrows) {
   EXPECT_THROW(render_offscreen(Scene{}, 10, -1), Error);
 }
 
+// Pixels of the true intersections' magenta: nothing else drawn is that colour (the depth maps
+// run blue-white-red).
+int magenta_pixels(const Image& img) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const auto* p = img.pixel(x, y);
+      n += p[0] > 150 && p[1] < 90 && p[2] > 130;
+    }
+  return n;
+}
+
+TEST(RenderOffscreen, IntersectionCurvesAreDrawnWhenAsked) {
+  Scene sc = test::scene_of(test::crossing_planes());
+  sc.frame.rotate(Plane{0, 3}, 0.5);
+  sc.frame.rotate(Plane{1, 2}, 0.35);
+  sc.frame.rotate(Plane{0, 2}, 0.17);
+  EXPECT_EQ(magenta_pixels(render_offscreen(sc, 320, 240)), 0);
+  sc.view.intersections = true;
+  IntersectionSummary drawn;
+  const Image img = render_offscreen(sc, 320, 240, &drawn);
+  EXPECT_TRUE(drawn.computed);
+  EXPECT_EQ(drawn.true_points, 1);
+  EXPECT_GT(magenta_pixels(img), 10) << "the bead on the true 4D point";
+}
+
 TEST(RenderOffscreen, CliffordTorusCoverageIsSensible) {
   Scene sc = test::scene_of(test::clifford_torus(48));
   sc.frame.rotate(Plane{0, 3}, 0.5);

@@ -119,6 +119,54 @@ TEST(SceneGeometry, CurvesBecomeTubesAndTheCameraSeesEverything) {
   EXPECT_EQ(build_scene_geometry(sc, 1.0).objects[0].mesh.vertex_count(), 50u * kTubeSides);
 }
 
+// The shadow of two planes of R^4 meeting at the origin: their shadows cross along a segment
+// whose two sheets agree in w only at the origin's shadow, where the true point's bead sits.
+TEST(SceneGeometry, IntersectionCurvesMarkTheTrueFourDimensionalPoint) {
+  Scene sc = test::scene_of(test::crossing_planes());
+  sc.frame.rotate(Plane{0, 3}, 0.5);
+  sc.frame.rotate(Plane{1, 2}, 0.35);
+  sc.frame.rotate(Plane{0, 2}, 0.17);
+  EXPECT_TRUE(build_scene_geometry(sc, 1.0).overlays.empty()) << "off by default";
+  EXPECT_FALSE(build_scene_geometry(sc, 1.0).intersections.computed);
+
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  ASSERT_EQ(g.objects.size(), 1u) << "overlays do not count as objects";
+  ASSERT_EQ(g.overlays.size(), 1u);
+  const IntersectionSummary& s = g.intersections;
+  EXPECT_TRUE(s.computed);
+  EXPECT_EQ(s.curves, 1);
+  EXPECT_EQ(s.true_curves, 1);
+  EXPECT_EQ(s.shadow_only_curves, 0);
+  EXPECT_EQ(s.true_points, 1);
+  const DrawObject& o = g.overlays[0];
+  ASSERT_GT(o.mesh.vertex_count(), 0u);
+  ASSERT_EQ(o.colours.size(), o.mesh.vertex_count());
+  double nearest_true = 1e9;
+  for (std::size_t v = 0; v < o.mesh.vertex_count(); ++v) {
+    EXPECT_TRUE(o.colours[v] == kTrueIntersectionColour || o.colours[v] == kShadowOnlyColour);
+    if (o.colours[v] == kTrueIntersectionColour)
+      nearest_true = std::min(nearest_true, o.mesh.positions[v].norm());
+  }
+  // The bead (2.5 × half the tube radius, 0.0375) is centred on the origin's shadow.
+  EXPECT_LT(nearest_true, 0.06);
+  EXPECT_NE(intersection_text(s).find("1 true (1 true point(s))"), std::string::npos);
+}
+
+TEST(SceneGeometry, IntersectionCurvesOfTheCliffordTorusAreShadowOnly) {
+  Scene sc = test::scene_of(test::clifford_torus(48));
+  sc.frame.rotate(Plane{0, 3}, 0.52);
+  sc.frame.rotate(Plane{1, 3}, 0.35);
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  ASSERT_EQ(g.overlays.size(), 1u);
+  EXPECT_EQ(g.intersections.true_curves, 0) << "the torus is embedded in R^4";
+  EXPECT_GE(g.intersections.shadow_only_curves, 1) << "but its turned shadow crosses itself";
+  EXPECT_GT(g.intersections.length, 0.5);
+  EXPECT_EQ(g.intersections.coplanar_pairs, 0);
+  for (const Vec3f& c : g.overlays[0].colours) EXPECT_EQ(c, kShadowOnlyColour);
+}
+
 TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
   const SceneGeometry g = build_scene_geometry(Scene{}, 1.0);
   EXPECT_TRUE(g.objects.empty());

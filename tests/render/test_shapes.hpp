@@ -78,6 +78,19 @@ inline Surface<4> tilted_square(double slope = 0.5, int n = 16, double bend = 0)
   return s;
 }
 
+// Two unit squares in the complementary planes xy and zw, crossing at one interior point (the
+// origin): a surface with one true 4D self-intersection. Turned so that no edge is axis-aligned.
+inline Surface<4> crossing_planes() {
+  Surface<4> s;
+  const double a = 0.013, b = 0.021;
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.push_back(Vec4(u - a, v + b, 0, 0));
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.push_back(Vec4(0, 0, u + b, v - a));
+  s.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+  return s;
+}
+
 inline Scene scene_of(Shape shape) {
   Scene sc;
   SceneObject o;
