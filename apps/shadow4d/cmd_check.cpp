@@ -61,6 +61,12 @@ std::string curves_in_r3(const std::string& label, std::size_t pairs,
   return t.str();
 }
 
+// Two sheets in R^4 meet at isolated points: the line for a surface itself or a pair of them.
+std::string points_in_r4(const std::string& label, std::size_t pairs, std::size_t points) {
+  return "  " + label + ": " + std::to_string(pairs) + " triangle pair(s), " +
+         std::to_string(points) + " distinct point(s)\n";
+}
+
 Surface<4> as_4d_surface(const Shape& shape) {
   if (const auto* s4 = std::get_if<Surface<4>>(&shape)) return *s4;
   return lift_to_4d(std::get<Surface<3>>(shape));
@@ -100,9 +106,8 @@ std::size_t run_check(const CheckOptions& opt) {
       const std::string own =
           dim == 3 ? curves_in_r3("true self-intersections", self.pairs.size(),
                                   shadow_intersections(s, Frame<4>()), o)
-                   : "  true 4D self-intersections: " + std::to_string(self.pairs.size()) +
-                         " triangle pair(s), " + std::to_string(self.points.size()) +
-                         " distinct point(s)\n";
+                   : points_in_r4("true 4D self-intersections", self.pairs.size(),
+                                  self.points.size());
       out["objects"].push_back(std::move(o));
       if (!opt.json)
         std::cout << "object '" << obj.name << "' (surface in R^" << dim << ", "
@@ -175,9 +180,7 @@ std::size_t run_check(const CheckOptions& opt) {
           da == 3 && db == 3
               ? curves_in_r3("true intersections", meet.pairs.size(),
                              shadow_intersections(a, b, Frame<4>()), o)
-              : "  true 4D intersections: " + std::to_string(meet.pairs.size()) +
-                    " triangle pair(s), " + std::to_string(meet.points.size()) +
-                    " distinct point(s)\n";
+              : points_in_r4("true 4D intersections", meet.pairs.size(), meet.points.size());
       out["between"].push_back(std::move(o));
       if (!opt.json)
         std::cout << "objects '" << na << "' and '" << nb << "'\n"

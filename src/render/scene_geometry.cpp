@@ -210,7 +210,7 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     }
     g.objects.push_back(std::move(d));
   }
-  // Thinner than the curves' tubes, so a knotted ribbon's crossings do not hide its sheets.
+  // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
   if (view.intersections) g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
   return g;
 }
