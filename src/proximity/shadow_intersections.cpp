@@ -174,6 +174,51 @@ void intersect_pair(const ShadowMesh& ma, int ia, const ShadowMesh& mb, int ib,
   out.segments.push_back(seg);
 }
 
+// Walks the segments into strokes: from every end or branch node (degree other than 2) along
+// nodes of degree 2, then once around each loop left. node[2s + k] is the node of segment s's
+// end k (-1: an end of its own); joints take their node's representative, so that neighbouring
+// segments meet exactly.
+void walk_strokes(ShadowIntersections& r, const std::vector<int>& node, const std::vector<int>& degree,
+                  const std::vector<Vec3>& reps) {
+  const int ns = static_cast<int>(r.segments.size());
+  std::vector<int> offset(reps.size() + 1, 0), incident(2 * static_cast<std::size_t>(ns));
+  for (int e = 0; e < 2 * ns; ++e)
+    if (node[e] >= 0) ++offset[node[e] + 1];
+  for (std::size_t n = 0; n < reps.size(); ++n) offset[n + 1] += offset[n];
+  std::vector<int> fill(offset.begin(), offset.end() - 1);
+  for (int e = 0; e < 2 * ns; ++e)
+    if (node[e] >= 0) incident[fill[node[e]]++] = e;
+  auto end_point = [&](int e) {
+    const ShadowSegment& s = r.segments[e / 2];
+    return node[e] >= 0 ? reps[node[e]] : (e % 2 == 0 ? s.p0 : s.p1);
+  };
+  std::vector<char> used(ns, 0);
+  // From end e of an unused segment onward, while the far node has exactly one other segment.
+  auto walk = [&](int e) {
+    ShadowStroke k;
+    k.points.push_back(end_point(e));
+    for (;;) {
+      const int s = e / 2, far = e ^ 1;
+      used[s] = 1;
+      k.segments.push_back(s);
+      k.points.push_back(end_point(far));
+      const int n = node[far];
+      if (n < 0 || degree[n] != 2) break;
+      const int next = incident[offset[n]] == far ? incident[offset[n] + 1] : incident[offset[n]];
+      if (used[next / 2]) {
+        k.closed = next / 2 == k.segments.front();
+        break;
+      }
+      e = next;
+    }
+    r.strokes.push_back(std::move(k));
+  };
+  for (int e = 0; e < 2 * ns; ++e)
+    if (!used[e / 2] && (node[e] < 0 || degree[node[e]] != 2)) walk(e);
+  for (int s = 0; s < ns; ++s)
+    if (!used[s]) walk(2 * s);
+}
+
 void chain_curves(ShadowIntersections& r, double join) {
   const int ns = static_cast<int>(r.segments.size());
   std::vector<Vec3> ends;
@@ -233,6 +278,7 @@ void chain_curves(ShadowIntersections& r, double join) {
       if (n < 0 || degree[n] != 2) c.closed = false;
     }
   }
+  walk_strokes(r, node, degree, reps);
   for (const auto& c : r.curves) {
     r.total_length += c.length;
     if (c.true_intersection())

@@ -29,9 +29,18 @@ struct ShadowCurve {
   bool true_intersection() const { return true_points > 0; }
 };
 
+// A curve's segments in walking order, from one end or branch point to the next (or once around
+// a loop): what a drawing joins into one smooth polyline.
+struct ShadowStroke {
+  std::vector<int> segments;  // indices into ShadowIntersections::segments, in order
+  std::vector<Vec3> points;   // segments.size() + 1 points (closed: the last equals the first)
+  bool closed = false;
+};
+
 struct ShadowIntersections {
   std::vector<ShadowSegment> segments;
   std::vector<ShadowCurve> curves;  // segments chained by shared end points
+  std::vector<ShadowStroke> strokes;  // every segment in exactly one stroke
   double total_length = 0;
   int shadow_only_curves = 0;       // curves whose sheets are apart in depth everywhere
   int true_curves = 0;              // curves that pass through a true 4D intersection

@@ -93,7 +93,8 @@ void extend(DepthRange& r, double d) {
 }
 
 // One overlay for the intersection curves of every R^4 surface with itself and with each other:
-// a thin tube per segment, in its class's colour, and a bead where the sheets truly meet.
+// thin tubes along their strokes, in each segment's class's colour, and a bead where the sheets
+// truly meet.
 DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionSummary& sum) {
   std::vector<const Surface<4>*> surfaces;
   for (const SceneObject& obj : scene.objects)
@@ -105,8 +106,9 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
   line.sides = 8;
   TubeOptions bead = line;
   bead.radius = 2.5 * radius;
-  auto add = [&](const std::vector<Vec3>& pts, const TubeOptions& opt, const Vec3f& colour) {
-    append_mesh(d.mesh, tube_mesh(pts, false, opt), 0);
+  auto add = [&](const std::vector<Vec3>& pts, const TubeOptions& opt, const Vec3f& colour,
+                 bool closed) {
+    append_mesh(d.mesh, tube_mesh(pts, closed, opt), 0);
     d.colours.resize(d.mesh.vertex_count(), colour);
     d.depth.resize(d.mesh.vertex_count(), 0.0);
   };
@@ -116,12 +118,27 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
     sum.true_curves += r.true_curves;
     sum.coplanar_pairs += r.coplanar_pairs;
     sum.length += r.total_length;
+    // One smooth tube per run of a stroke's segments of one class (a tube per segment would
+    // show a cap at every joint).
+    for (const ShadowStroke& k : r.strokes) {
+      const int n = static_cast<int>(k.segments.size());
+      for (int first = 0; first < n;) {
+        const bool is_true = r.segments[k.segments[first]].true_intersection;
+        int last = first;
+        while (last + 1 < n && r.segments[k.segments[last + 1]].true_intersection == is_true) ++last;
+        const bool loop = k.closed && first == 0 && last == n - 1;
+        std::vector<Vec3> pts(k.points.begin() + first, k.points.begin() + last + 2);
+        if (loop) pts.pop_back();  // tube_mesh closes it
+        add(pts, line, is_true ? kTrueIntersectionColour : kShadowOnlyColour, loop);
+        first = last + 1;
+      }
+    }
     for (const ShadowSegment& s : r.segments) {
-      add({s.p0, s.p1}, line, s.true_intersection ? kTrueIntersectionColour : kShadowOnlyColour);
       if (!s.true_intersection) continue;
       ++sum.true_points;
       const Vec3 along = (s.p1 - s.p0).norm() > 0 ? Vec3((s.p1 - s.p0).normalized()) : Vec3::UnitX();
-      add({s.meet - bead.radius * along, s.meet + bead.radius * along}, bead, kTrueIntersectionColour);
+      add({s.meet - bead.radius * along, s.meet + bead.radius * along}, bead, kTrueIntersectionColour,
+          false);
     }
   };
   for (std::size_t i = 0; i < surfaces.size(); ++i) {

@@ -97,6 +97,27 @@ TEST(SelfIntersections, BetweenTwoSurfaces) {
   EXPECT_TRUE(surface_intersections(a, b).points.empty());
 }
 
+// Every segment is in exactly one stroke, and a stroke's points are its segments' ends in
+// walking order: segment i runs from point i to point i + 1 (either way round).
+void expect_strokes_walk_the_segments(const ShadowIntersections& r, double tol) {
+  std::vector<int> seen(r.segments.size(), 0);
+  for (const ShadowStroke& k : r.strokes) {
+    ASSERT_FALSE(k.segments.empty());
+    ASSERT_EQ(k.points.size(), k.segments.size() + 1);
+    for (std::size_t i = 0; i < k.segments.size(); ++i) {
+      const ShadowSegment& s = r.segments[k.segments[i]];
+      ++seen[k.segments[i]];
+      const double ahead = std::max((s.p0 - k.points[i]).norm(), (s.p1 - k.points[i + 1]).norm());
+      const double back = std::max((s.p1 - k.points[i]).norm(), (s.p0 - k.points[i + 1]).norm());
+      EXPECT_LE(std::min(ahead, back), tol) << "segment " << i << " of a stroke";
+    }
+    if (k.closed) {
+      EXPECT_EQ(k.points.front(), k.points.back());
+    }
+  }
+  for (int n : seen) EXPECT_EQ(n, 1);
+}
+
 TEST(ShadowIntersections, TrueCrossingIsFoundWhereTheDepthsAgree) {
   const Surface<4> s = crossing_patches(Vec4::Zero());
   const Frame<4> f = generic_frame();
@@ -129,6 +150,11 @@ TEST(ShadowIntersections, TrueCrossingIsFoundWhereTheDepthsAgree) {
     }
   (void)hi;
   EXPECT_NEAR(r.total_length, tmax - tmin, 1e-9);
+  // Drawn as one open stroke from one end of the line to the other.
+  ASSERT_EQ(r.strokes.size(), 1u);
+  EXPECT_FALSE(r.strokes[0].closed);
+  EXPECT_NEAR((r.strokes[0].points.back() - r.strokes[0].points.front()).norm(), tmax - tmin, 1e-9);
+  expect_strokes_walk_the_segments(r, 1e-9);
 }
 
 TEST(ShadowIntersections, SameShadowApartInDepthIsShadowOnly) {
@@ -160,6 +186,80 @@ TEST(ShadowIntersections, CliffordTorusShadowCrossesItselfOnlyInTheShadow) {
   double sum = 0;
   for (const auto& c : r.curves) sum += c.length;
   EXPECT_NEAR(sum, r.total_length, 1e-12);
+  // Each closed curve (a loop with no branch or end) is walked as one closed stroke.
+  expect_strokes_walk_the_segments(r, 1e-9);
+  int closed_curves = 0;
+  for (const auto& c : r.curves) closed_curves += c.closed;
+  int closed_strokes = 0;
+  for (const auto& k : r.strokes) closed_strokes += k.closed;
+  EXPECT_EQ(closed_strokes, closed_curves);
+  // In this view the shadow has two double curves, each ending at two branch points (Whitney
+  // umbrellas), with no triple point: one open stroke each.
+  EXPECT_EQ(r.curves.size(), 2u);
+  EXPECT_EQ(r.strokes.size(), 2u);
+  EXPECT_EQ(closed_curves, 0);
+}
+
+// A round sphere of radius r about c in the 3-space w = c.w (latitude-longitude mesh).
+void add_sphere(Surface<4>& m, const Vec4& c, double r, int n) {
+  const int base = static_cast<int>(m.vertices.size());
+  m.vertices.push_back(c + Vec4(0, 0, r, 0));
+  for (int i = 1; i < n; ++i)
+    for (int j = 0; j < 2 * n; ++j) {
+      const double th = kPi * i / n, ph = kPi * j / n;
+      m.vertices.push_back(c + r * Vec4(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph),
+                                        std::cos(th), 0));
+    }
+  m.vertices.push_back(c + Vec4(0, 0, -r, 0));
+  const int south = static_cast<int>(m.vertices.size()) - 1;
+  auto ring = [&](int i, int j) { return base + 1 + (i - 1) * 2 * n + (j % (2 * n)); };
+  for (int j = 0; j < 2 * n; ++j) {
+    m.triangles.push_back({base, ring(1, j), ring(1, j + 1)});
+    m.triangles.push_back({south, ring(n - 1, j + 1), ring(n - 1, j)});
+    for (int i = 1; i + 1 < n; ++i) {
+      m.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
+      m.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
+    }
+  }
+}
+
+TEST(ShadowIntersections, OverlappingSpheresApartInDepthCrossInOneClosedStroke) {
+  // Two unit spheres 1 apart in x and 2 apart in w: their shadows (seen along w) meet in one circle
+  // of radius sqrt(3)/2, only in the shadow.
+  Surface<4> a, b;
+  add_sphere(a, Vec4(0, 0, 0, 0), 1.0, 24);
+  add_sphere(b, Vec4(1, 0.01, 0.02, 2), 1.0, 24);
+  const ShadowIntersections r = shadow_intersections(a, b, Frame<4>());
+  ASSERT_EQ(r.curves.size(), 1u);
+  EXPECT_TRUE(r.curves[0].closed);
+  EXPECT_EQ(r.shadow_only_curves, 1);
+  EXPECT_NEAR(r.total_length, 2 * kPi * std::sqrt(3.0) / 2, 0.05);
+  ASSERT_EQ(r.strokes.size(), 1u);
+  EXPECT_TRUE(r.strokes[0].closed);
+  EXPECT_EQ(r.strokes[0].segments.size(), r.segments.size());
+  expect_strokes_walk_the_segments(r, 1e-9);
+}
+
+TEST(ShadowIntersections, StrokesWalkTheCurvesOfThreeCrossingPatchesInManyViews) {
+  // Crossing patches at several places and turns: curves that end on the patches' borders and
+  // meet each other, so strokes start at ends and at branch points.
+  Surface<4> s;
+  add_patch(s, Vec4(0, 0, 0, 0), Vec4(1, 0, 0.1, 0), Vec4(0, 1, 0, 0.2), 6);
+  add_patch(s, Vec4(0.1, 0.05, 0, 0.3), Vec4(0, 0, 1, 0), Vec4(0.2, 0, 0, 1), 6);
+  add_patch(s, Vec4(-0.2, 0.1, 0.05, -0.4), Vec4(0, 0.9, 0.4, 0), Vec4(0.3, 0, 0, 0.8), 5);
+  for (int turn = 0; turn < 6; ++turn) {
+    Frame<4> f = generic_frame();
+    f.rotate({0, 1}, 0.4 * turn);
+    f.rotate({2, 3}, 0.25 * turn);
+    const ShadowIntersections r = shadow_intersections(s, f);
+    ASSERT_GT(r.segments.size(), 10u);
+    expect_strokes_walk_the_segments(r, 1e-9);
+    double stroke_length = 0;
+    for (const auto& k : r.strokes)
+      for (std::size_t i = 0; i + 1 < k.points.size(); ++i)
+        stroke_length += (k.points[i + 1] - k.points[i]).norm();
+    EXPECT_NEAR(stroke_length, r.total_length, 1e-7);
+  }
 }
 
 }  // namespace
