@@ -17,7 +17,8 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
   app.add_flag("--wireframe", wireframe, "draw triangle edges");
   app.add_flag("--shadow", shadow, "flat-shaded shadow drawing (no lighting)");
   app.add_flag("--intersections", intersections,
-               "draw the shadow's intersection curves: yellow shadow-only, magenta true 4D");
+               "draw the shadow's intersection curves (yellow shadow-only, magenta true 4D) and "
+               "mark the crossings of the curves as seen (a white dot on the over strand)");
   app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
 }
 

@@ -17,7 +17,10 @@ const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff"
                                                ".4vect", ".txt", ".xyz", ".curve"};
 
 // Horizontal colour bar: far (blue) on the left, near (red) on the right.
-void legend(ColourMap map) {
+// The colour map's legend: R^4 objects are coloured by w, R^3 ones by distance from the eye.
+void legend(ColourMap map, const Scene& scene) {
+  bool in_r4 = false, in_r3 = false;
+  for (const SceneObject& obj : scene.objects) (ambient_dim(obj.shape) == 4 ? in_r4 : in_r3) = true;
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p = ImGui::GetCursorScreenPos();
   const float w = ImGui::GetContentRegionAvail().x, h = 14;
@@ -28,9 +31,12 @@ void legend(ColourMap map) {
                       ImGui::ColorConvertFloat4ToU32(ImVec4(c.x(), c.y(), c.z(), 1)));
   }
   ImGui::Dummy(ImVec2(w, h));
-  ImGui::TextUnformatted("far (w -)");
-  ImGui::SameLine(w - ImGui::CalcTextSize("near (w +)").x);
-  ImGui::TextUnformatted("near (w +)");
+  const char* far = in_r4 ? "far (w -)" : "far from the eye";
+  const char* near = in_r4 ? "near (w +)" : "near the eye";
+  ImGui::TextUnformatted(far);
+  ImGui::SameLine(w - ImGui::CalcTextSize(near).x);
+  ImGui::TextUnformatted(near);
+  if (in_r4 && in_r3) ImGui::TextDisabled("objects in R^3: by distance from the eye");
 }
 
 }  // namespace
@@ -115,20 +121,21 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::Separator();
   ImGui::TextUnformatted("Drawing");
   ViewSettings& v = model.scene.view;
-  ImGui::Checkbox("4D depth colour", &v.depth_colour);
+  ImGui::Checkbox("depth colour", &v.depth_colour);
   if (v.depth_colour) {
     int map = static_cast<int>(v.colour_map);
     ImGui::Combo("colour map", &map, "coolwarm\0rainbow\0grey\0");
     v.colour_map = static_cast<ColourMap>(map);
-    legend(v.colour_map);
+    legend(v.colour_map, model.scene);
   }
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();
   ImGui::Checkbox("flat shadow", &v.shadow);
-  ImGui::Checkbox("intersection curves", &v.intersections);
+  ImGui::Checkbox("intersections and crossings", &v.intersections);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
-                      "apart in w), magenta where the surface truly meets itself in R^4");
+                      "apart in w), magenta where the surface truly meets itself in R^4;\n"
+                      "for curves, a white dot on the over strand of each crossing of this view");
   if (v.intersections && model.intersections.computed)
     ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
   float radius = static_cast<float>(v.tube_radius);

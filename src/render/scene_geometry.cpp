@@ -7,6 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
 
 namespace s4d {
@@ -141,6 +142,7 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
           false);
     }
   };
+  sum.surfaces = static_cast<int>(surfaces.size());
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
     draw(shadow_intersections(*surfaces[i], scene.frame));
     for (std::size_t j = i + 1; j < surfaces.size(); ++j)
@@ -151,14 +153,95 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
   return d;
 }
 
+// Beads on the over strand of each crossing of the curves' image, added to `d` (the overlay).
+// A dot on the near side of the over strand's tube (radius `tube`), facing the eye.
+void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, DrawObject& d,
+                        IntersectionSummary& sum) {
+  for (const SceneObject& obj : scene.objects) sum.curve_objects += !is_surface(obj.shape);
+  if (sum.curve_objects == 0) return;
+  const std::vector<ScreenCrossing> found = screen_crossings(scene, camera, &sum.crossing_non_generic);
+  sum.crossings = static_cast<int>(found.size());
+  TubeOptions dot;
+  dot.radius = 0.7 * tube;
+  dot.sides = 16;
+  for (const ScreenCrossing& c : found) {
+    // A short tube along the line of sight reads as a round dot whatever the strand's direction.
+    const Vec3 toward = camera.eye() - c.over;
+    const Vec3 along = toward.norm() > 0 ? Vec3(toward.normalized()) : Vec3::UnitZ();
+    const Vec3 front = c.over + tube * along;
+    append_mesh(d.mesh, tube_mesh({front - 0.1 * tube * along, front + 0.1 * tube * along}, false, dot), 0);
+  }
+  d.colours.resize(d.mesh.vertex_count(), kCrossingColour);
+  d.depth.resize(d.mesh.vertex_count(), 0.0);
+  d.mesh.source.assign(d.mesh.vertex_count(), 0);
+}
+
 }  // namespace
+
+std::vector<ScreenCrossing> screen_crossings(const Scene& scene, const Camera& camera,
+                                             int* non_generic) {
+  // The perspective image of a segment is a segment: under the projective map
+  // (x, y, z) -> (x, y, 1) / w, w the distance in front of the eye, the camera's image becomes an
+  // orthographic shadow with depth 1/w (larger = nearer), as shadow_crossings<3> wants it.
+  const Mat4 view = camera.view();
+  auto eye_coords = [&](const Vec3& p) -> Vec3 { return (view * p.homogeneous()).head<3>(); };
+  const double nearest = camera.near_plane;
+  std::vector<ScreenCrossing> out;
+  if (non_generic) *non_generic = 0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    Curve<3> drawn;  // the curve where it is drawn (shadow space)
+    if (const auto* c3 = std::get_if<Curve<3>>(&scene.objects[i].shape)) {
+      drawn = *c3;
+    } else if (const auto* c4 = std::get_if<Curve<4>>(&scene.objects[i].shape)) {
+      for (const auto& poly : c4->components) {
+        Polyline<3> p;
+        p.closed = poly.closed;
+        for (const Vec4& q : poly.points) p.points.push_back(scene.frame.shadow(q));
+        drawn.components.push_back(std::move(p));
+      }
+    } else {
+      continue;
+    }
+    Curve<3> image = drawn;
+    for (auto& poly : image.components)
+      for (Vec3& p : poly.points) {
+        const Vec3 e = eye_coords(p);
+        const double w = -e.z();
+        p = w >= nearest && std::isfinite(w) ? Vec3(e.x() / w, e.y() / w, 1 / w)
+                                             : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+      }
+    const ShadowCrossingResult<3> r = shadow_crossings<3>(image, Frame<3>());
+    if (non_generic) *non_generic += r.non_generic;
+    // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
+    auto on_strand = [&](const SegmentRef& s, double t) {
+      const auto& poly = drawn.components[s.component];
+      const auto& img = image.components[s.component];
+      const std::size_t k = static_cast<std::size_t>(s.segment), next = (k + 1) % poly.points.size();
+      const double inv0 = img.points[k].z(), inv1 = img.points[next].z();
+      const double u = t * inv1 / ((1 - t) * inv0 + t * inv1);
+      return Vec3(poly.points[k] + u * (poly.points[next] - poly.points[k]));
+    };
+    for (const ShadowCrossing<3>& c : r.crossings) {
+      const Vec3 pa = on_strand(c.a, c.ta), pb = on_strand(c.b, c.tb);
+      out.push_back({static_cast<int>(i), c.a_over() ? pa : pb, c.a_over() ? pb : pa});
+    }
+  }
+  return out;
+}
 
 std::string intersection_text(const IntersectionSummary& s) {
   std::ostringstream o;
-  o << s.curves << " curve(s), total length " << std::setprecision(4) << s.length << ": "
-    << s.shadow_only_curves << " shadow-only, " << s.true_curves << " true (" << s.true_points
-    << " true point(s))";
-  if (s.coplanar_pairs > 0) o << "; the view is not generic (sheets overlap in area): turn it";
+  o << std::setprecision(4);
+  if (s.surfaces > 0 || s.curve_objects == 0) {
+    o << s.curves << " curve(s), total length " << s.length << ": " << s.shadow_only_curves
+      << " shadow-only, " << s.true_curves << " true (" << s.true_points << " true point(s))";
+    if (s.coplanar_pairs > 0) o << "; the view is not generic (sheets overlap in area): turn it";
+  }
+  if (s.curve_objects > 0) {
+    if (s.surfaces > 0) o << "; ";
+    o << s.crossings << " crossing(s) of the curves in this view";
+    if (s.crossing_non_generic > 0) o << " (not a regular diagram here: turn it)";
+  }
   return o.str();
 }
 
@@ -227,8 +310,11 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     }
     g.objects.push_back(std::move(d));
   }
-  // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
-  if (view.intersections) g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
+  if (view.intersections) {
+    // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
+    g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
+    add_crossing_beads(scene, g.camera, radius, g.overlays.back(), g.intersections);
+  }
   return g;
 }
 

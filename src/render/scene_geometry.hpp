@@ -31,6 +31,8 @@ struct DepthRange {
 // meets itself in R^4 (the paper's depth test), marked again by a bead.
 inline const Vec3f kShadowOnlyColour{1.0f, 0.82f, 0.10f};
 inline const Vec3f kTrueIntersectionColour{1.0f, 0.10f, 0.85f};
+// The bead on the over strand at each crossing of a curve's image (view.intersections).
+inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
 
 // What the drawn intersection curves are, summed over the R^4 surfaces (each with itself and
 // each pair): for the view panel and the render command.
@@ -42,10 +44,30 @@ struct IntersectionSummary {
   int true_points = 0;     // segments carrying a true 4D intersection (beads drawn)
   int coplanar_pairs = 0;  // sheets overlapping in area: the view is not generic
   double length = 0;
+  int surfaces = 0;        // R^4 surfaces looked at
+  // The curves' image on the screen (their diagram in this view).
+  int curve_objects = 0;
+  int crossings = 0;
+  int crossing_non_generic = 0;  // spots where the image is not a regular diagram
 };
 
+// A crossing of a curve's image on the screen: the point of each strand there, in shadow space
+// (where the curve is drawn), the over strand nearer the eye.
+struct ScreenCrossing {
+  int object = 0;  // index in scene.objects
+  Vec3 over, under;
+};
+
+// The crossings of the image of every curve object as `camera` sees it (curves in R^4 by their
+// shadow through scene.frame): the knot diagram of the view, perspective included. Segments that
+// reach behind the eye are left out. `non_generic` (when given) counts the spots where the image
+// is not a regular diagram (a crossing at a vertex, overlapping strands).
+std::vector<ScreenCrossing> screen_crossings(const Scene& scene, const Camera& camera,
+                                             int* non_generic = nullptr);
+
 // "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s))", and a note when the
-// view is not generic.
+// view is not generic; for curves, "3 crossing(s) of the curves in this view". Only the parts the
+// scene has.
 std::string intersection_text(const IntersectionSummary& s);
 
 struct SceneGeometry {
@@ -66,7 +88,8 @@ struct SceneGeometry {
 // (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
 // and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
 // colour or a neutral grey. With view.intersections, adds the intersection curves of the R^4
-// surfaces' shadow as thin tubes (overlays). Throws s4d::Error on a mesh with out-of-range
+// surfaces' shadow as thin tubes and a bead on the over strand of each crossing of the curves'
+// image (overlays). Throws s4d::Error on a mesh with out-of-range
 // triangle indices.
 SceneGeometry build_scene_geometry(const Scene& scene, double aspect);
 

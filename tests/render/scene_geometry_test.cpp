@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "render/test_shapes.hpp"
 
 namespace s4d {
@@ -165,6 +167,97 @@ TEST(SceneGeometry, IntersectionCurvesOfTheCliffordTorusAreShadowOnly) {
   EXPECT_GT(g.intersections.length, 0.5);
   EXPECT_EQ(g.intersections.coplanar_pairs, 0);
   for (const Vec3f& c : g.overlays[0].colours) EXPECT_EQ(c, kShadowOnlyColour);
+}
+
+// Where a point is drawn on the screen (normalised device x, y).
+Vec2 on_screen(const Camera& cam, const Vec3& p) {
+  const Eigen::Vector4d c = cam.projection() * cam.view() * p.homogeneous();
+  return c.head<2>() / c.w();
+}
+
+// Distance from p to the closed polyline of `c`'s first component.
+double distance_to_curve(const Curve<3>& c, const Vec3& p) {
+  const auto& pts = c.components[0].points;
+  double best = 1e9;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Vec3 a = pts[k], b = pts[(k + 1) % pts.size()];
+    const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + t * (b - a) - p).norm());
+  }
+  return best;
+}
+
+// Each crossing of the image is a point of each strand, both drawn on the same pixel, the over
+// one nearer the eye: checked through the camera's own matrices, perspective included.
+void expect_true_crossings(const Scene& sc, const Camera& cam, const Curve<3>& drawn,
+                           const std::vector<ScreenCrossing>& found) {
+  for (const ScreenCrossing& c : found) {
+    EXPECT_LT((on_screen(cam, c.over) - on_screen(cam, c.under)).norm(), 1e-9);
+    EXPECT_LT(cam.view_depth(c.over), cam.view_depth(c.under));
+    EXPECT_LT(distance_to_curve(drawn, c.over), 1e-9);
+    EXPECT_LT(distance_to_curve(drawn, c.under), 1e-9);
+    EXPECT_EQ(c.object, 0);
+  }
+  (void)sc;
+}
+
+// The trefoil seen down its axis is its standard diagram: three crossings, each marked by a dot
+// in front of the over strand.
+TEST(SceneGeometry, CrossingsOfTheTrefoilsImageAreItsDiagram) {
+  const Curve<3> k = test::trefoil();
+  Scene sc = test::scene_of(k);
+  EXPECT_TRUE(build_scene_geometry(sc, 1.0).overlays.empty()) << "off by default";
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  EXPECT_EQ(g.intersections.curve_objects, 1);
+  EXPECT_EQ(g.intersections.crossings, 3);
+  EXPECT_EQ(g.intersections.crossing_non_generic, 0);
+  EXPECT_EQ(intersection_text(g.intersections), "3 crossing(s) of the curves in this view");
+  const auto found = screen_crossings(sc, g.camera);
+  ASSERT_EQ(found.size(), 3u);
+  expect_true_crossings(sc, g.camera, k, found);
+  ASSERT_EQ(g.overlays.size(), 1u);
+  int dots = 0;
+  for (std::size_t v = 0; v < g.overlays[0].mesh.vertex_count(); ++v) {
+    if (!(g.overlays[0].colours[v] == kCrossingColour)) continue;
+    ++dots;
+    // Every dot sits in front of (nearer the eye than) a crossing's over strand.
+    double best = 1e9;
+    for (const ScreenCrossing& c : found) best = std::min(best, (g.overlays[0].mesh.positions[v] - c.over).norm());
+    EXPECT_LT(best, 2 * sc.view.tube_radius);
+  }
+  EXPECT_GT(dots, 0);
+}
+
+// Close up and turned, perspective moves the crossings of the image away from those of any
+// parallel projection: the crossings found are still where the strands meet on the screen.
+TEST(SceneGeometry, CrossingsFollowThePerspectiveOfTheCamera) {
+  const Curve<3> k = test::trefoil();
+  Scene sc = test::scene_of(k);
+  sc.view.trackball = Eigen::AngleAxisd(0.7, Vec3(1, 0.3, 0).normalized()) *
+                      Eigen::AngleAxisd(0.4, Vec3::UnitZ());
+  sc.view.fov_deg = 70;
+  sc.view.zoom = 1.3;
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.5);
+  const auto found = screen_crossings(sc, g.camera);
+  EXPECT_GE(found.size(), 3u) << "a trefoil's diagram has at least three crossings";
+  EXPECT_EQ(g.intersections.crossings, static_cast<int>(found.size()));
+  expect_true_crossings(sc, g.camera, k, found);
+}
+
+// A curve in R^4 is seen through its shadow: the trefoil with any w has the trefoil's diagram.
+TEST(SceneGeometry, CrossingsOfACurveInFourDimensionsAreThoseOfItsShadow) {
+  const Curve<3> k = test::trefoil();
+  Curve<4> lifted;
+  Polyline<4> p;
+  for (const Vec3& q : k.components[0].points) p.points.push_back(Vec4(q.x(), q.y(), q.z(), 0.3 * q.x() * q.y()));
+  lifted.components.push_back(p);
+  Scene sc = test::scene_of(lifted);
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  EXPECT_EQ(g.intersections.crossings, 3);
+  expect_true_crossings(sc, g.camera, k, screen_crossings(sc, g.camera));
 }
 
 TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
