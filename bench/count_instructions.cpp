@@ -111,14 +111,13 @@ double pairs(const Options& o) {
 
 double impact(const Options& o) {
   SelfProximity<4, 3> q(grid_triangles(o.n));
-  SelfProximity<4, 3> probe(grid_triangles(o.n));  // the thickness, outside the count
-  double phase = 0;
+  int k = 0;
   return measure(o, 20, [&](bool timed) {
-    const auto x0 = crumpled_grid<4>(o.n, phase);
-    const auto x1 = crumpled_grid<4>(o.n, phase + kPhasePerStep);
-    phase += kPhasePerStep;
+    const auto x0 = crumpled_grid<4>(o.n, k * kPhasePerStep);
+    const auto x1 = crumpled_grid<4>(o.n, (k + 1) * kPhasePerStep);
     CcdOptions opt;
-    opt.thickness = 0.995 * smallest_gap(probe, o.n, x0);
+    opt.thickness = stepping_thickness(o.n, k);  // outside the count, and seldom worked out
+    ++k;
     return run(timed, [&] { q.earliest_impact(x0, x1, opt); });
   });
 }

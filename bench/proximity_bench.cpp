@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "proximity_grid.hpp"
 
@@ -96,25 +97,25 @@ void BM_EarliestImpact4D_Cold(benchmark::State& state) {
 BENCHMARK(BM_EarliestImpact4D_Cold)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
 
 // Steps along the same deformation as the stepping pairs query, each with the thickness set just
-// under the smallest gap at its start (0.995 ×): every step starts contact-free with a fold about
-// to touch, the hardest case for the query. The fraction of steps that hit is reported.
+// under the smallest gap at its start (step_thickness): every step starts contact-free with a
+// fold about to touch, the hardest case for the query. The fraction of steps that hit is reported.
 void BM_EarliestImpact4D_Stepping(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   SelfProximity<4, 3> q(grid_triangles(n));
-  SelfProximity<4, 3> probe(grid_triangles(n));  // the thickness, outside the timing
-  double phase = 0, hits = 0, tests = 0;
-  auto x0 = crumpled_grid<4>(n, phase);
-  auto x1 = crumpled_grid<4>(n, phase + kPhasePerStep);
+  int k = 0;  // the step goes from phase k to k + 1
+  double hits = 0, tests = 0;
+  auto x0 = crumpled_grid<4>(n, 0.0);
+  auto x1 = crumpled_grid<4>(n, kPhasePerStep);
   CcdOptions opt;
-  opt.thickness = 0.995 * smallest_gap(probe, n, x0);
+  opt.thickness = stepping_thickness(n, 0);
   q.earliest_impact(x0, x1, opt);
   const long long runs0 = q.broad_phase_runs();
   for (auto _ : state) {
     state.PauseTiming();
-    phase += kPhasePerStep;
+    ++k;
     x0 = std::move(x1);
-    x1 = crumpled_grid<4>(n, phase + kPhasePerStep);
-    opt.thickness = 0.995 * smallest_gap(probe, n, x0);
+    x1 = crumpled_grid<4>(n, (k + 1) * kPhasePerStep);
+    opt.thickness = stepping_thickness(n, k);
     state.ResumeTiming();
     const Impact<4> r = q.earliest_impact(x0, x1, opt);
     hits += r.hit;

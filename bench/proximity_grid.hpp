@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -54,6 +55,30 @@ inline double smallest_gap(SelfProximity<4, 3>& probe, int n, std::span<const Ve
   double d = std::numeric_limits<double>::infinity();
   for (const auto& p : near) d = std::min(d, p.closest.distance);
   return d;
+}
+
+// The thickness of the stepping impact query's step from phase k·kPhasePerStep on the n × n grid:
+// 0.995 × the smallest gap there, from a probe (a second SelfProximity). Kept for the whole
+// process and worked out many phases at a time (256 at 64²), so that the probe seldom runs between
+// two timed queries. Run before every step, its own bounds pushed the query's out of the cache and
+// the benchmark timed that too (64², 2026-12-03: 0.75-0.77 ms a step with the probe run before
+// each, 0.58-0.61 ms without). A physics step asks one SelfProximity both of its queries.
+inline double stepping_thickness(int n, int k) {
+  struct Probe {
+    SelfProximity<4, 3> q;
+    std::vector<double> thickness;
+  };
+  static std::map<int, Probe> probes;
+  auto it = probes.find(n);
+  if (it == probes.end()) it = probes.emplace(n, Probe{SelfProximity<4, 3>(grid_triangles(n)), {}}).first;
+  Probe& p = it->second;
+  const int chunk = std::max(16, 256 * 64 * 64 / (n * n));  // 256 at 64², fewer on larger grids
+  while (static_cast<int>(p.thickness.size()) <= k) {
+    const int first = static_cast<int>(p.thickness.size());
+    for (int j = first; j < first + chunk; ++j)
+      p.thickness.push_back(0.995 * smallest_gap(p.q, n, crumpled_grid<4>(n, j * kPhasePerStep)));
+  }
+  return p.thickness[k];
 }
 
 }  // namespace s4d::bench
