@@ -159,8 +159,11 @@ void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, D
                         IntersectionSummary& sum) {
   for (const SceneObject& obj : scene.objects) sum.curve_objects += !is_surface(obj.shape);
   if (sum.curve_objects == 0) return;
-  const std::vector<ScreenCrossing> found = screen_crossings(scene, camera, &sum.crossing_non_generic);
+  const ScreenCrossings screen = screen_crossings(scene, camera);
+  const std::vector<ScreenCrossing>& found = screen.crossings;
   sum.crossings = static_cast<int>(found.size());
+  sum.crossing_non_generic = screen.non_generic;
+  sum.crossing_behind_eye = screen.behind_eye;
   TubeOptions dot;
   dot.radius = 0.7 * tube;
   dot.sides = 16;
@@ -178,43 +181,76 @@ void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, D
 
 }  // namespace
 
-std::vector<ScreenCrossing> screen_crossings(const Scene& scene, const Camera& camera,
-                                             int* non_generic) {
+ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
   // The perspective image of a segment is a segment: under the projective map
   // (x, y, z) -> (x, y, 1) / w, w the distance in front of the eye, the camera's image becomes an
-  // orthographic shadow with depth 1/w (larger = nearer), as shadow_crossings<3> wants it.
+  // orthographic shadow with depth 1/w (larger = nearer), as shadow_crossings<3> wants it. Only
+  // points in front of the near plane have an image: each curve is cut into the runs of those.
   const Mat4 view = camera.view();
-  auto eye_coords = [&](const Vec3& p) -> Vec3 { return (view * p.homogeneous()).head<3>(); };
-  const double nearest = camera.near_plane;
-  std::vector<ScreenCrossing> out;
-  if (non_generic) *non_generic = 0;
+  ScreenCrossings out;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    Curve<3> drawn;  // the curve where it is drawn (shadow space)
+    std::vector<Polyline<3>> drawn;  // the curve where it is drawn (shadow space)
     if (const auto* c3 = std::get_if<Curve<3>>(&scene.objects[i].shape)) {
-      drawn = *c3;
+      drawn = c3->components;
     } else if (const auto* c4 = std::get_if<Curve<4>>(&scene.objects[i].shape)) {
       for (const auto& poly : c4->components) {
         Polyline<3> p;
         p.closed = poly.closed;
         for (const Vec4& q : poly.points) p.points.push_back(scene.frame.shadow(q));
-        drawn.components.push_back(std::move(p));
+        drawn.push_back(std::move(p));
       }
     } else {
       continue;
     }
-    Curve<3> image = drawn;
-    for (auto& poly : image.components)
-      for (Vec3& p : poly.points) {
-        const Vec3 e = eye_coords(p);
+    Curve<3> image, seen;  // the image's runs, and the same runs where they are drawn
+    for (const Polyline<3>& poly : drawn) {
+      const std::size_t n = poly.points.size();
+      std::vector<Vec3> img(n);
+      std::vector<bool> visible(n);
+      std::size_t hidden = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec3 e = (view * poly.points[k].homogeneous()).head<3>();
         const double w = -e.z();
-        p = w >= nearest && std::isfinite(w) ? Vec3(e.x() / w, e.y() / w, 1 / w)
-                                             : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+        visible[k] = w >= camera.near_plane && std::isfinite(w) && e.allFinite();
+        if (visible[k]) img[k] = Vec3(e.x() / w, e.y() / w, 1 / w);
+        hidden += !visible[k];
       }
+      out.behind_eye += static_cast<int>(hidden);
+      if (hidden == 0) {
+        image.components.push_back({img, poly.closed});
+        seen.components.push_back(poly);
+        continue;
+      }
+      // Open runs of visible points. A closed curve is walked from just after a hidden point, so
+      // that a run passing its last point stays whole.
+      Polyline<3> run_img{{}, false}, run_seen{{}, false};
+      auto flush = [&] {
+        if (run_img.points.size() >= 2) {
+          image.components.push_back(std::move(run_img));
+          seen.components.push_back(std::move(run_seen));
+        }
+        run_img = Polyline<3>{{}, false};
+        run_seen = Polyline<3>{{}, false};
+      };
+      std::size_t first = 0;
+      if (poly.closed)
+        while (visible[first]) ++first;
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t k = poly.closed ? (first + 1 + j) % n : j;
+        if (visible[k]) {
+          run_img.points.push_back(img[k]);
+          run_seen.points.push_back(poly.points[k]);
+        } else {
+          flush();
+        }
+      }
+      flush();
+    }
     const ShadowCrossingResult<3> r = shadow_crossings<3>(image, Frame<3>());
-    if (non_generic) *non_generic += r.non_generic;
+    out.non_generic += r.non_generic;
     // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
     auto on_strand = [&](const SegmentRef& s, double t) {
-      const auto& poly = drawn.components[s.component];
+      const auto& poly = seen.components[s.component];
       const auto& img = image.components[s.component];
       const std::size_t k = static_cast<std::size_t>(s.segment), next = (k + 1) % poly.points.size();
       const double inv0 = img.points[k].z(), inv1 = img.points[next].z();
@@ -223,7 +259,7 @@ std::vector<ScreenCrossing> screen_crossings(const Scene& scene, const Camera& c
     };
     for (const ShadowCrossing<3>& c : r.crossings) {
       const Vec3 pa = on_strand(c.a, c.ta), pb = on_strand(c.b, c.tb);
-      out.push_back({static_cast<int>(i), c.a_over() ? pa : pb, c.a_over() ? pb : pa});
+      out.crossings.push_back({static_cast<int>(i), c.a_over() ? pa : pb, c.a_over() ? pb : pa});
     }
   }
   return out;
@@ -241,6 +277,7 @@ std::string intersection_text(const IntersectionSummary& s) {
     if (s.surfaces > 0) o << "; ";
     o << s.crossings << " crossing(s) of the curves in this view";
     if (s.crossing_non_generic > 0) o << " (not a regular diagram here: turn it)";
+    if (s.crossing_behind_eye > 0) o << " (part of a curve is behind the eye and not counted)";
   }
   return o.str();
 }

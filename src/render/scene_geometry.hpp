@@ -49,6 +49,7 @@ struct IntersectionSummary {
   int curve_objects = 0;
   int crossings = 0;
   int crossing_non_generic = 0;  // spots where the image is not a regular diagram
+  int crossing_behind_eye = 0;   // curve points the camera cannot see (behind or at the eye)
 };
 
 // A crossing of a curve's image on the screen: the point of each strand there, in shadow space
@@ -58,12 +59,17 @@ struct ScreenCrossing {
   Vec3 over, under;
 };
 
+struct ScreenCrossings {
+  std::vector<ScreenCrossing> crossings;
+  int non_generic = 0;      // spots where the image is not a regular diagram (a crossing at a
+                            // vertex, overlapping strands): turning the view a little clears them
+  int behind_eye = 0;       // curve points closer to the eye than the near plane, or behind it:
+                            // their segments have no image and are left out
+};
+
 // The crossings of the image of every curve object as `camera` sees it (curves in R^4 by their
-// shadow through scene.frame): the knot diagram of the view, perspective included. Segments that
-// reach behind the eye are left out. `non_generic` (when given) counts the spots where the image
-// is not a regular diagram (a crossing at a vertex, overlapping strands).
-std::vector<ScreenCrossing> screen_crossings(const Scene& scene, const Camera& camera,
-                                             int* non_generic = nullptr);
+// shadow through scene.frame): the knot diagram of the view, perspective included.
+ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera);
 
 // "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s))", and a note when the
 // view is not generic; for curves, "3 crossing(s) of the curves in this view". Only the parts the

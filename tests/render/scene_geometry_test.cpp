@@ -213,7 +213,9 @@ TEST(SceneGeometry, CrossingsOfTheTrefoilsImageAreItsDiagram) {
   EXPECT_EQ(g.intersections.crossings, 3);
   EXPECT_EQ(g.intersections.crossing_non_generic, 0);
   EXPECT_EQ(intersection_text(g.intersections), "3 crossing(s) of the curves in this view");
-  const auto found = screen_crossings(sc, g.camera);
+  const ScreenCrossings screen = screen_crossings(sc, g.camera);
+  EXPECT_EQ(screen.behind_eye, 0);
+  const auto& found = screen.crossings;
   ASSERT_EQ(found.size(), 3u);
   expect_true_crossings(sc, g.camera, k, found);
   ASSERT_EQ(g.overlays.size(), 1u);
@@ -240,7 +242,7 @@ TEST(SceneGeometry, CrossingsFollowThePerspectiveOfTheCamera) {
   sc.view.zoom = 1.3;
   sc.view.intersections = true;
   const SceneGeometry g = build_scene_geometry(sc, 1.5);
-  const auto found = screen_crossings(sc, g.camera);
+  const auto found = screen_crossings(sc, g.camera).crossings;
   EXPECT_GE(found.size(), 3u) << "a trefoil's diagram has at least three crossings";
   EXPECT_EQ(g.intersections.crossings, static_cast<int>(found.size()));
   expect_true_crossings(sc, g.camera, k, found);
@@ -257,7 +259,28 @@ TEST(SceneGeometry, CrossingsOfACurveInFourDimensionsAreThoseOfItsShadow) {
   sc.view.intersections = true;
   const SceneGeometry g = build_scene_geometry(sc, 1.0);
   EXPECT_EQ(g.intersections.crossings, 3);
-  expect_true_crossings(sc, g.camera, k, screen_crossings(sc, g.camera));
+  expect_true_crossings(sc, g.camera, k, screen_crossings(sc, g.camera).crossings);
+}
+
+// With the eye inside the knot, the part behind it has no image: it is left out (and said so),
+// and what is counted is still where the visible strands cross.
+TEST(SceneGeometry, CrossingsLeaveOutWhatIsBehindTheEye) {
+  const Curve<3> k = test::trefoil();
+  Scene sc = test::scene_of(k);
+  sc.view.trackball = Eigen::AngleAxisd(0.5, Vec3::UnitX()) * Eigen::AngleAxisd(0.3, Vec3::UnitY());
+  sc.view.distance = 0.15;
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  const ScreenCrossings screen = screen_crossings(sc, g.camera);
+  EXPECT_GT(screen.behind_eye, 0);
+  EXPECT_LT(screen.behind_eye, static_cast<int>(k.components[0].points.size()));
+  EXPECT_EQ(g.intersections.crossing_behind_eye, screen.behind_eye);
+  EXPECT_NE(intersection_text(g.intersections).find("behind the eye"), std::string::npos);
+  for (const ScreenCrossing& c : screen.crossings) {
+    EXPECT_GT(g.camera.view_depth(c.under), g.camera.near_plane);
+    EXPECT_GT(g.camera.view_depth(c.over), g.camera.near_plane);
+  }
+  expect_true_crossings(sc, g.camera, k, screen.crossings);
 }
 
 TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
