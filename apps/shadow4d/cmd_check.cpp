@@ -35,18 +35,16 @@ nlohmann::json shadow_json(const ShadowIntersections& s) {
 }
 
 std::string shadow_text(const ShadowIntersections& s) {
-  std::ostringstream o;
-  o << s.curves.size() << " curve(s) from " << s.segments.size() << " segment(s), total length "
-    << std::setprecision(6) << s.total_length << "; " << s.shadow_only_curves << " shadow-only, "
-    << s.true_curves << " true";
-  if (s.coplanar_pairs > 0) o << "; " << s.coplanar_pairs << " coplanar overlaps (non-generic view)";
-  o << "\n";
+  ShadowCurveCounts c;
+  c.add(s);
+  std::string t = counts_text(c) + "\n";
   // Where sheets of the shadow overlap in area (the Clifford torus or the spun trefoil seen
   // straight along w), the curves are only where those areas happen to cut: say what to do.
   if (s.coplanar_pairs > 0)
-    o << "  note: the view is not generic: parts of the shadow overlap in area, where no curve is\n"
-         "  defined; turn it (e.g. --rotate xw=30,yw=20) for curves that mean something\n";
-  return o.str();
+    t += "  note: " + std::to_string(s.coplanar_pairs) +
+         " triangle pair(s) of the shadow overlap in area, where no curve is defined;\n"
+         "  a turned view (e.g. --rotate xw=30,yw=20) gives curves that mean something\n";
+  return t;
 }
 
 // Sheets of surfaces in R^3 meet along curves, not at points: seen straight on, lifted surfaces

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 
 #include "proximity/bvh.hpp"
 #include "proximity/self_intersections.hpp"
@@ -301,6 +303,24 @@ double join_distance(const ShadowMesh& a, const ShadowMesh* b, const ShadowInter
 }
 
 }  // namespace
+
+void ShadowCurveCounts::add(const ShadowIntersections& r) {
+  curves += static_cast<int>(r.curves.size());
+  shadow_only_curves += r.shadow_only_curves;
+  true_curves += r.true_curves;
+  coplanar_pairs += r.coplanar_pairs;
+  length += r.total_length;
+  for (const ShadowSegment& seg : r.segments) true_points += seg.true_intersection;
+}
+
+std::string counts_text(const ShadowCurveCounts& c) {
+  std::ostringstream o;
+  o << c.curves << " curve(s), total length " << std::setprecision(6) << c.length << ": "
+    << c.shadow_only_curves << " shadow-only, " << c.true_curves << " true (" << c.true_points
+    << " true point(s))";
+  if (c.coplanar_pairs > 0) o << "; the view is not generic (sheets overlap in area): turn it";
+  return o.str();
+}
 
 ShadowIntersections shadow_intersections(const Surface<4>& s, const Frame<4>& frame,
                                          const ShadowIntersectionOptions& opt) {

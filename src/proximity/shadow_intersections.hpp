@@ -3,6 +3,7 @@
 // Where the depths differ the crossing is only in the shadow; where they agree the surface truly
 // meets itself in R^4.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "core/frame.hpp"
@@ -47,6 +48,22 @@ struct ShadowIntersections {
   int coplanar_pairs = 0;           // triangle pairs whose shadows are coplanar and overlap
                                     // (not a curve; the frame is non-generic there)
 };
+
+// What one or several ShadowIntersections add up to (a surface with itself, pairs of surfaces):
+// the one line that `check`, the view panel and `render` give.
+struct ShadowCurveCounts {
+  int curves = 0;
+  int shadow_only_curves = 0;
+  int true_curves = 0;
+  int true_points = 0;     // segments carrying a true 4D intersection
+  int coplanar_pairs = 0;  // sheets overlapping in area: the view is not generic
+  double length = 0;
+  void add(const ShadowIntersections& r);
+};
+
+// "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s))", and "; the view is not
+// generic (sheets overlap in area): turn it" when it is not.
+std::string counts_text(const ShadowCurveCounts& c);
 
 struct ShadowIntersectionOptions {
   // Segment end points closer than this are joined into one curve. < 0: 1e-9 × shadow diagonal.

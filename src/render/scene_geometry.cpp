@@ -114,11 +114,7 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
     d.depth.resize(d.mesh.vertex_count(), 0.0);
   };
   auto draw = [&](const ShadowIntersections& r) {
-    sum.curves += static_cast<int>(r.curves.size());
-    sum.shadow_only_curves += r.shadow_only_curves;
-    sum.true_curves += r.true_curves;
-    sum.coplanar_pairs += r.coplanar_pairs;
-    sum.length += r.total_length;
+    sum.add(r);
     // One smooth tube per run of a stroke's segments of one class (a tube per segment would
     // show a cap at every joint).
     for (const ShadowStroke& k : r.strokes) {
@@ -136,7 +132,6 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
     }
     for (const ShadowSegment& s : r.segments) {
       if (!s.true_intersection) continue;
-      ++sum.true_points;
       const Vec3 along = (s.p1 - s.p0).norm() > 0 ? Vec3((s.p1 - s.p0).normalized()) : Vec3::UnitX();
       add({s.meet - bead.radius * along, s.meet + bead.radius * along}, bead, kTrueIntersectionColour,
           false);
@@ -268,11 +263,7 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
 std::string intersection_text(const IntersectionSummary& s) {
   std::ostringstream o;
   o << std::setprecision(4);
-  if (s.surfaces > 0 || s.curve_objects == 0) {
-    o << s.curves << " curve(s), total length " << s.length << ": " << s.shadow_only_curves
-      << " shadow-only, " << s.true_curves << " true (" << s.true_points << " true point(s))";
-    if (s.coplanar_pairs > 0) o << "; the view is not generic (sheets overlap in area): turn it";
-  }
+  if (s.surfaces > 0 || s.curve_objects == 0) o << counts_text(s);
   if (s.curve_objects > 0) {
     if (s.surfaces > 0) o << "; ";
     o << s.crossings << " crossing(s) of the curves in this view";

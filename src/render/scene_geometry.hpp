@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "io/scene.hpp"
+#include "proximity/shadow_intersections.hpp"
 #include "render/camera.hpp"
 #include "render/geometry.hpp"
 
@@ -36,15 +37,9 @@ inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
 
 // What the drawn intersection curves are, summed over the R^4 surfaces (each with itself and
 // each pair): for the view panel and the render command.
-struct IntersectionSummary {
+struct IntersectionSummary : ShadowCurveCounts {  // true_points: the beads drawn
   bool computed = false;  // view.intersections was on
-  int curves = 0;
-  int shadow_only_curves = 0;
-  int true_curves = 0;
-  int true_points = 0;     // segments carrying a true 4D intersection (beads drawn)
-  int coplanar_pairs = 0;  // sheets overlapping in area: the view is not generic
-  double length = 0;
-  int surfaces = 0;        // R^4 surfaces looked at
+  int surfaces = 0;       // R^4 surfaces looked at
   // The curves' image on the screen (their diagram in this view).
   int curve_objects = 0;
   int crossings = 0;

@@ -138,6 +138,19 @@ TEST(ShadowIntersections, TrueCrossingIsFoundWhereTheDepthsAgree) {
     }
   EXPECT_GE(meets, 1);
   EXPECT_LE(meets, 2);
+  // The one-line report adds them up: twice the same result, twice everything.
+  ShadowCurveCounts counts;
+  counts.add(r);
+  counts.add(r);
+  EXPECT_EQ(counts.curves, 2);
+  EXPECT_EQ(counts.true_curves, 2);
+  EXPECT_EQ(counts.true_points, 2 * meets);
+  EXPECT_NEAR(counts.length, 2 * r.total_length, 1e-12);
+  EXPECT_EQ(counts_text(counts).rfind("2 curve(s), total length ", 0), 0u) << counts_text(counts);
+  EXPECT_NE(counts_text(counts).find(": 0 shadow-only, 2 true (" + std::to_string(2 * meets) +
+                                     " true point(s))"),
+            std::string::npos);
+  EXPECT_EQ(counts_text(counts).find("not generic"), std::string::npos);
   // The segments are straight pieces of one line: their lengths add up to its end-to-end length.
   Vec3 lo = r.segments[0].p0, hi = lo;
   const Vec3 dir = (r.segments[0].p1 - r.segments[0].p0).normalized();
