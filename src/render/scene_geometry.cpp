@@ -200,24 +200,26 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
     Curve<3> image, seen;  // the image's runs, and the same runs where they are drawn
     for (const Polyline<3>& poly : drawn) {
       const std::size_t n = poly.points.size();
-      std::vector<Vec3> img(n);
+      std::vector<Vec3> eye(n);
       std::vector<bool> visible(n);
       std::size_t hidden = 0;
       for (std::size_t k = 0; k < n; ++k) {
-        const Vec3 e = (view * poly.points[k].homogeneous()).head<3>();
-        const double w = -e.z();
-        visible[k] = w >= camera.near_plane && std::isfinite(w) && e.allFinite();
-        if (visible[k]) img[k] = Vec3(e.x() / w, e.y() / w, 1 / w);
+        eye[k] = (view * poly.points[k].homogeneous()).head<3>();
+        visible[k] = -eye[k].z() >= camera.near_plane && eye[k].allFinite();
         hidden += !visible[k];
       }
+      auto image_of = [](const Vec3& e) { return Vec3(-e.x() / e.z(), -e.y() / e.z(), -1 / e.z()); };
       out.behind_eye += static_cast<int>(hidden);
       if (hidden == 0) {
-        image.components.push_back({img, poly.closed});
+        Polyline<3> img{{}, poly.closed};
+        for (const Vec3& e : eye) img.points.push_back(image_of(e));
+        image.components.push_back(std::move(img));
         seen.components.push_back(poly);
         continue;
       }
-      // Open runs of visible points. A closed curve is walked from just after a hidden point, so
-      // that a run passing its last point stays whole.
+      // Open runs of what the camera sees: a segment that crosses the near plane is cut there
+      // (w is affine along it). A closed curve is walked from a hidden point, so that a run passing
+      // its last point stays whole.
       Polyline<3> run_img{{}, false}, run_seen{{}, false};
       auto flush = [&] {
         if (run_img.points.size() >= 2) {
@@ -227,15 +229,27 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
         run_img = Polyline<3>{{}, false};
         run_seen = Polyline<3>{{}, false};
       };
+      auto add_cut = [&](std::size_t in, std::size_t out_k) {  // in visible, out_k hidden
+        const double w_in = -eye[in].z(), w_out = -eye[out_k].z();
+        if (!std::isfinite(w_out) || !eye[out_k].allFinite()) return;
+        const double t = (w_in - camera.near_plane) / (w_in - w_out);
+        run_img.points.push_back(image_of(eye[in] + t * (eye[out_k] - eye[in])));
+        run_seen.points.push_back(poly.points[in] + t * (poly.points[out_k] - poly.points[in]));
+      };
       std::size_t first = 0;
       if (poly.closed)
         while (visible[first]) ++first;
-      for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t k = poly.closed ? (first + 1 + j) % n : j;
+      for (std::size_t j = 0; j <= n; ++j) {
+        if (!poly.closed && j == n) break;
+        const std::size_t k = poly.closed ? (first + j) % n : j;
+        const bool has_prev = poly.closed ? j > 0 : j > 0;
+        const std::size_t prev = poly.closed ? (first + j + n - 1) % n : j - 1;
         if (visible[k]) {
-          run_img.points.push_back(img[k]);
+          if (has_prev && !visible[prev]) add_cut(k, prev);
+          run_img.points.push_back(image_of(eye[k]));
           run_seen.points.push_back(poly.points[k]);
-        } else {
+        } else if (has_prev && visible[prev]) {
+          add_cut(prev, k);
           flush();
         }
       }

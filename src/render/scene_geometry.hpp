@@ -59,7 +59,7 @@ struct ScreenCrossings {
   int non_generic = 0;      // spots where the image is not a regular diagram (a crossing at a
                             // vertex, overlapping strands): turning the view a little clears them
   int behind_eye = 0;       // curve points closer to the eye than the near plane, or behind it:
-                            // their segments have no image and are left out
+                            // the curve is cut there, and only what the camera sees is counted
 };
 
 // The crossings of the image of every curve object as `camera` sees it (curves in R^4 by their

@@ -175,15 +175,15 @@ Vec2 on_screen(const Camera& cam, const Vec3& p) {
   return c.head<2>() / c.w();
 }
 
-// Distance from p to the closed polyline of `c`'s first component.
+// Distance from p to the curve (every component, open or closed).
 double distance_to_curve(const Curve<3>& c, const Vec3& p) {
-  const auto& pts = c.components[0].points;
   double best = 1e9;
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    const Vec3 a = pts[k], b = pts[(k + 1) % pts.size()];
-    const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-    best = std::min(best, (a + t * (b - a) - p).norm());
-  }
+  for (const auto& poly : c.components)
+    for (std::size_t k = 0; k < poly.segment_count(); ++k) {
+      const Vec3 a = poly.seg_a(k), b = poly.seg_b(k);
+      const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      best = std::min(best, (a + t * (b - a) - p).norm());
+    }
   return best;
 }
 
@@ -281,6 +281,27 @@ TEST(SceneGeometry, CrossingsLeaveOutWhatIsBehindTheEye) {
     EXPECT_GT(g.camera.view_depth(c.over), g.camera.near_plane);
   }
   expect_true_crossings(sc, g.camera, k, screen.crossings);
+}
+
+// A strand that comes from behind the eye is cut at the near plane: the part in view still
+// crosses. The eye is at (0, 0, 2) looking down -z (near plane 0.5); strand a runs from behind
+// it to (0.6, 0, -2), strand b crosses its image at a = 0.3846 of the way (exactly: t = 5/13).
+TEST(SceneGeometry, AStrandFromBehindTheEyeStillCrossesWhereItIsSeen) {
+  const Camera cam = make_camera(BoundingSphere{Vec3::Zero(), 1.0}, Eigen::Quaterniond::Identity(),
+                                 2.0, 35.0, 1.0);
+  ASSERT_NEAR(cam.eye().z(), 2.0, 1e-12);
+  ASSERT_NEAR(cam.near_plane, 0.5, 1e-12);
+  Curve<3> c;
+  c.components.push_back({{Vec3(0, 0, 3), Vec3(0.6, 0, -2)}, false});
+  c.components.push_back({{Vec3(0.625, -1, -0.5), Vec3(0.625, 1, -0.5)}, false});
+  const Scene sc = test::scene_of(c);
+  const ScreenCrossings screen = screen_crossings(sc, cam);
+  EXPECT_EQ(screen.behind_eye, 1);
+  ASSERT_EQ(screen.crossings.size(), 1u);
+  const Vec3 expected = Vec3(0, 0, 3) + (5.0 / 13.0) * Vec3(0.6, 0, -5);
+  EXPECT_LT((screen.crossings[0].over - expected).norm(), 1e-9) << "strand a is nearer the eye";
+  EXPECT_NEAR(screen.crossings[0].under.x(), 0.625, 1e-12);
+  expect_true_crossings(sc, cam, c, screen.crossings);
 }
 
 TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
