@@ -97,7 +97,7 @@ void BM_EarliestImpact4D_Cold(benchmark::State& state) {
 BENCHMARK(BM_EarliestImpact4D_Cold)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
 
 // Steps along the same deformation as the stepping pairs query, each with the thickness set just
-// under the smallest gap at its start (step_thickness): every step starts contact-free with a
+// under the smallest gap at its start (stepping_thickness): every step starts contact-free with a
 // fold about to touch, the hardest case for the query. The fraction of steps that hit is reported.
 void BM_EarliestImpact4D_Stepping(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));

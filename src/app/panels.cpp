@@ -16,8 +16,8 @@ namespace {
 const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff", ".vect",
                                                ".4vect", ".txt", ".xyz", ".curve"};
 
-// Horizontal colour bar: far (blue) on the left, near (red) on the right.
-// The colour map's legend: R^4 objects are coloured by w, R^3 ones by distance from the eye.
+// Horizontal colour bar: far (blue) on the left, near (red) on the right. R^4 objects are coloured
+// by w, R^3 ones by distance from the eye.
 void legend(ColourMap map, const Scene& scene) {
   bool in_r4 = false, in_r3 = false;
   for (const SceneObject& obj : scene.objects) (ambient_dim(obj.shape) == 4 ? in_r4 : in_r3) = true;

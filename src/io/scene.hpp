@@ -36,7 +36,8 @@ struct ViewSettings {
   bool wireframe = false;      // draw triangle edges over the surface
   bool shadow = false;         // flat-shaded shadow drawing (no lighting)
   // Draw the intersection curves of the R^4 surfaces' shadow: shadow-only crossings (the sheets
-  // are apart in w) in yellow, true 4D intersections in magenta (the paper's depth test).
+  // are apart in w) in yellow, true 4D intersections in magenta (the paper's depth test); and a
+  // dot on the over strand of each crossing of the curves as the camera sees them.
   bool intersections = false;
   double tube_radius = 0.03;   // curve tube radius, in scene units
   Vec3f background{0.08f, 0.09f, 0.11f};

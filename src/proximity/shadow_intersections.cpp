@@ -310,7 +310,7 @@ void ShadowCurveCounts::add(const ShadowIntersections& r) {
   true_curves += r.true_curves;
   coplanar_pairs += r.coplanar_pairs;
   length += r.total_length;
-  for (const ShadowSegment& seg : r.segments) true_points += seg.true_intersection;
+  for (const ShadowCurve& c : r.curves) true_points += c.true_points;
 }
 
 std::string counts_text(const ShadowCurveCounts& c) {

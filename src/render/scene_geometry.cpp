@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
 #include <sstream>
 #include <type_traits>
 
@@ -148,8 +147,8 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
   return d;
 }
 
-// Beads on the over strand of each crossing of the curves' image, added to `d` (the overlay).
-// A dot on the near side of the over strand's tube (radius `tube`), facing the eye.
+// For each crossing of the curves' image, a dot on the near side of the over strand's tube
+// (radius `tube`), facing the eye; added to `d` (the overlay).
 void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, DrawObject& d,
                         IntersectionSummary& sum) {
   for (const SceneObject& obj : scene.objects) sum.curve_objects += !is_surface(obj.shape);
@@ -239,10 +238,11 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       std::size_t first = 0;
       if (poly.closed)
         while (visible[first]) ++first;
-      for (std::size_t j = 0; j <= n; ++j) {
-        if (!poly.closed && j == n) break;
+      // A closed curve comes back to its first (hidden) point, to cut the segment leading to it.
+      const std::size_t steps = poly.closed ? n + 1 : n;
+      for (std::size_t j = 0; j < steps; ++j) {
         const std::size_t k = poly.closed ? (first + j) % n : j;
-        const bool has_prev = poly.closed ? j > 0 : j > 0;
+        const bool has_prev = j > 0;
         const std::size_t prev = poly.closed ? (first + j + n - 1) % n : j - 1;
         if (visible[k]) {
           if (has_prev && !visible[prev]) add_cut(k, prev);
@@ -276,7 +276,6 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
 
 std::string intersection_text(const IntersectionSummary& s) {
   std::ostringstream o;
-  o << std::setprecision(4);
   if (s.surfaces > 0 || s.curve_objects == 0) o << counts_text(s);
   if (s.curve_objects > 0) {
     if (s.surfaces > 0) o << "; ";

@@ -32,7 +32,7 @@ struct DepthRange {
 // meets itself in R^4 (the paper's depth test), marked again by a bead.
 inline const Vec3f kShadowOnlyColour{1.0f, 0.82f, 0.10f};
 inline const Vec3f kTrueIntersectionColour{1.0f, 0.10f, 0.85f};
-// The bead on the over strand at each crossing of a curve's image (view.intersections).
+// The dot on the over strand at each crossing of a curve's image (view.intersections).
 inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
 
 // What the drawn intersection curves are, summed over the R^4 surfaces (each with itself and
@@ -89,9 +89,8 @@ struct SceneGeometry {
 // (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
 // and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
 // colour or a neutral grey. With view.intersections, adds the intersection curves of the R^4
-// surfaces' shadow as thin tubes and a bead on the over strand of each crossing of the curves'
-// image (overlays). Throws s4d::Error on a mesh with out-of-range
-// triangle indices.
+// surfaces' shadow as thin tubes and a dot on the over strand of each crossing of the curves'
+// image (overlays). Throws s4d::Error on a mesh with out-of-range triangle indices.
 SceneGeometry build_scene_geometry(const Scene& scene, double aspect);
 
 // The colour of an object when depth colouring is off (or the map is kGrey).

@@ -189,7 +189,7 @@ double distance_to_curve(const Curve<3>& c, const Vec3& p) {
 
 // Each crossing of the image is a point of each strand, both drawn on the same pixel, the over
 // one nearer the eye: checked through the camera's own matrices, perspective included.
-void expect_true_crossings(const Scene& sc, const Camera& cam, const Curve<3>& drawn,
+void expect_true_crossings(const Camera& cam, const Curve<3>& drawn,
                            const std::vector<ScreenCrossing>& found) {
   for (const ScreenCrossing& c : found) {
     EXPECT_LT((on_screen(cam, c.over) - on_screen(cam, c.under)).norm(), 1e-9);
@@ -198,7 +198,6 @@ void expect_true_crossings(const Scene& sc, const Camera& cam, const Curve<3>& d
     EXPECT_LT(distance_to_curve(drawn, c.under), 1e-9);
     EXPECT_EQ(c.object, 0);
   }
-  (void)sc;
 }
 
 // The trefoil seen down its axis is its standard diagram: three crossings, each marked by a dot
@@ -217,7 +216,7 @@ TEST(SceneGeometry, CrossingsOfTheTrefoilsImageAreItsDiagram) {
   EXPECT_EQ(screen.behind_eye, 0);
   const auto& found = screen.crossings;
   ASSERT_EQ(found.size(), 3u);
-  expect_true_crossings(sc, g.camera, k, found);
+  expect_true_crossings(g.camera, k, found);
   ASSERT_EQ(g.overlays.size(), 1u);
   int dots = 0;
   for (std::size_t v = 0; v < g.overlays[0].mesh.vertex_count(); ++v) {
@@ -245,7 +244,7 @@ TEST(SceneGeometry, CrossingsFollowThePerspectiveOfTheCamera) {
   const auto found = screen_crossings(sc, g.camera).crossings;
   EXPECT_GE(found.size(), 3u) << "a trefoil's diagram has at least three crossings";
   EXPECT_EQ(g.intersections.crossings, static_cast<int>(found.size()));
-  expect_true_crossings(sc, g.camera, k, found);
+  expect_true_crossings(g.camera, k, found);
 }
 
 // A curve in R^4 is seen through its shadow: the trefoil with any w has the trefoil's diagram.
@@ -259,7 +258,7 @@ TEST(SceneGeometry, CrossingsOfACurveInFourDimensionsAreThoseOfItsShadow) {
   sc.view.intersections = true;
   const SceneGeometry g = build_scene_geometry(sc, 1.0);
   EXPECT_EQ(g.intersections.crossings, 3);
-  expect_true_crossings(sc, g.camera, k, screen_crossings(sc, g.camera).crossings);
+  expect_true_crossings(g.camera, k, screen_crossings(sc, g.camera).crossings);
 }
 
 // With the eye inside the knot, the part behind it has no image: it is left out (and said so),
@@ -280,7 +279,7 @@ TEST(SceneGeometry, CrossingsLeaveOutWhatIsBehindTheEye) {
     EXPECT_GT(g.camera.view_depth(c.under), g.camera.near_plane);
     EXPECT_GT(g.camera.view_depth(c.over), g.camera.near_plane);
   }
-  expect_true_crossings(sc, g.camera, k, screen.crossings);
+  expect_true_crossings(g.camera, k, screen.crossings);
 }
 
 // A strand that comes from behind the eye is cut at the near plane: the part in view still
@@ -301,7 +300,7 @@ TEST(SceneGeometry, AStrandFromBehindTheEyeStillCrossesWhereItIsSeen) {
   const Vec3 expected = Vec3(0, 0, 3) + (5.0 / 13.0) * Vec3(0.6, 0, -5);
   EXPECT_LT((screen.crossings[0].over - expected).norm(), 1e-9) << "strand a is nearer the eye";
   EXPECT_NEAR(screen.crossings[0].under.x(), 0.625, 1e-12);
-  expect_true_crossings(sc, cam, c, screen.crossings);
+  expect_true_crossings(cam, c, screen.crossings);
 }
 
 TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
