@@ -165,8 +165,24 @@ void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, D
     // A short tube along the line of sight reads as a round dot whatever the strand's direction.
     const Vec3 toward = camera.eye() - c.over;
     const Vec3 along = toward.norm() > 0 ? Vec3(toward.normalized()) : Vec3::UnitZ();
-    const Vec3 front = c.over + tube * along;
-    append_mesh(d.mesh, tube_mesh({front - 0.1 * tube * along, front + 0.1 * tube * along}, false, dot), 0);
+    // The dot must clear both tubes wherever it covers them. Along the line of sight, a tube whose
+    // axis is inclined by θ to the screen rises r / cos θ + ρ tan θ in front of its axis point
+    // within ρ of it on the screen (ρ the dot's radius); a dot at the over tube's plain radius
+    // showed as a crescent on an inclined strand, or under a close under strand. θ is capped at
+    // 74°: a strand seen almost end on would put the dot far out.
+    auto rise = [&](const Vec3& direction) {
+      const double sin_t = std::min(std::abs(direction.dot(along)), 0.96);
+      const double cos_t = std::sqrt(1 - sin_t * sin_t);
+      return (tube + dot.radius * sin_t) / cos_t;
+    };
+    const double under_rise = rise(c.under_direction) - (c.over - c.under).dot(along);
+    const double clear = std::max(rise(c.over_direction), under_rise) + 0.1 * tube;
+    // Shrunk as much as it came nearer the eye, so that every dot looks the same size.
+    TubeOptions near = dot;
+    const double eye_distance = toward.norm();
+    if (eye_distance > 2 * clear) near.radius *= (eye_distance - clear) / eye_distance;
+    const Vec3 front = c.over + clear * along;
+    append_mesh(d.mesh, tube_mesh({front, front + 0.2 * tube * along}, false, near), 0);
   }
   d.colours.resize(d.mesh.vertex_count(), kCrossingColour);
   d.depth.resize(d.mesh.vertex_count(), 0.0);
@@ -258,17 +274,28 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
     const ShadowCrossingResult<3> r = shadow_crossings<3>(image, Frame<3>());
     out.non_generic += r.non_generic;
     // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
-    auto on_strand = [&](const SegmentRef& s, double t) {
+    // Also the segment's unit direction.
+    auto on_strand = [&](const SegmentRef& s, double t, Vec3& direction) {
       const auto& poly = seen.components[s.component];
       const auto& img = image.components[s.component];
       const std::size_t k = static_cast<std::size_t>(s.segment), next = (k + 1) % poly.points.size();
       const double inv0 = img.points[k].z(), inv1 = img.points[next].z();
       const double u = t * inv1 / ((1 - t) * inv0 + t * inv1);
-      return Vec3(poly.points[k] + u * (poly.points[next] - poly.points[k]));
+      const Vec3 along = poly.points[next] - poly.points[k];
+      if (along.norm() > 0) direction = along.normalized();
+      return Vec3(poly.points[k] + u * along);
     };
     for (const ShadowCrossing<3>& c : r.crossings) {
-      const Vec3 pa = on_strand(c.a, c.ta), pb = on_strand(c.b, c.tb);
-      out.crossings.push_back({static_cast<int>(i), c.a_over() ? pa : pb, c.a_over() ? pb : pa});
+      ScreenCrossing s;
+      s.object = static_cast<int>(i);
+      Vec3 da = Vec3::UnitX(), db = Vec3::UnitX();
+      const Vec3 pa = on_strand(c.a, c.ta, da), pb = on_strand(c.b, c.tb, db);
+      const bool a_over = c.a_over();
+      s.over = a_over ? pa : pb;
+      s.under = a_over ? pb : pa;
+      s.over_direction = a_over ? da : db;
+      s.under_direction = a_over ? db : da;
+      out.crossings.push_back(s);
     }
   }
   return out;

@@ -48,10 +48,11 @@ struct IntersectionSummary : ShadowCurveCounts {  // true_points: the beads draw
 };
 
 // A crossing of a curve's image on the screen: the point of each strand there, in shadow space
-// (where the curve is drawn), the over strand nearer the eye.
+// (where the curve is drawn), the over strand nearer the eye, and each strand's unit direction.
 struct ScreenCrossing {
   int object = 0;  // index in scene.objects
   Vec3 over, under;
+  Vec3 over_direction = Vec3::UnitX(), under_direction = Vec3::UnitX();
 };
 
 struct ScreenCrossings {

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "render/gl_context.hpp"
@@ -74,6 +76,51 @@ TEST(RenderOffscreen, IntersectionCurvesAreDrawnWhenAsked) {
   EXPECT_TRUE(drawn.computed);
   EXPECT_EQ(drawn.true_points, 1);
   EXPECT_GT(magenta_pixels(img), 10) << "the bead on the true 4D point";
+}
+
+// Pixels the crossing dots add to an image of `curve` (seen down -z): those near-white with the
+// dots drawn and not without them. The curve is dark blue, so only the dots (and highlights,
+// which are in both images) are near-white.
+int crossing_dot_pixels(const Curve<3>& curve) {
+  Scene sc = test::scene_of(curve);
+  sc.objects[0].colour = Vec3f(0.1f, 0.1f, 0.4f);
+  sc.view.depth_colour = false;
+  sc.view.tube_radius = 0.1;
+  auto white = [](const Image& img) {
+    std::vector<bool> w(static_cast<std::size_t>(img.width) * img.height);
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const auto* p = img.pixel(x, y);
+        w[static_cast<std::size_t>(y) * img.width + x] = p[0] > 200 && p[1] > 200 && p[2] > 200;
+      }
+    return w;
+  };
+  const auto plain = white(render_offscreen(sc, 320, 240));
+  sc.view.intersections = true;
+  IntersectionSummary drawn;
+  const auto dotted = white(render_offscreen(sc, 320, 240, &drawn));
+  EXPECT_EQ(drawn.crossings, 1);
+  int n = 0;
+  for (std::size_t i = 0; i < plain.size(); ++i) n += dotted[i] && !plain[i];
+  return n;
+}
+
+// A strand along x under one along y, 0.1 apart in depth at the crossing (the tubes, radius 0.1,
+// overlap there): the dot on the over strand shows whole when that strand climbs towards the eye
+// at 55°, as when it lies flat. It used to sit at the tube's plain radius and show as a crescent.
+TEST(RenderOffscreen, CrossingDotsShowWholeOnAStrandInclinedToTheScreen) {
+  auto crossing = [](double incline) {
+    const Vec3 over(0, 0, 0.1), dir(0, std::cos(incline), std::sin(incline));
+    Curve<3> c;
+    c.components.push_back({{Vec3(-1, 0, 0), Vec3(1, 0, 0)}, false});
+    c.components.push_back({{over - 0.6 * dir, over + 0.6 * dir}, false});
+    return c;
+  };
+  const int flat = crossing_dot_pixels(crossing(0.0));
+  EXPECT_GT(flat, 40);
+  const int inclined = crossing_dot_pixels(crossing(55.0 * std::acos(-1.0) / 180.0));
+  EXPECT_GT(inclined, 0.85 * flat);
+  EXPECT_LT(inclined, 1.15 * flat) << "the dot looks the same size";
 }
 
 TEST(RenderOffscreen, CliffordTorusCoverageIsSensible) {

@@ -300,6 +300,8 @@ TEST(SceneGeometry, AStrandFromBehindTheEyeStillCrossesWhereItIsSeen) {
   const Vec3 expected = Vec3(0, 0, 3) + (5.0 / 13.0) * Vec3(0.6, 0, -5);
   EXPECT_LT((screen.crossings[0].over - expected).norm(), 1e-9) << "strand a is nearer the eye";
   EXPECT_NEAR(screen.crossings[0].under.x(), 0.625, 1e-12);
+  EXPECT_LT((screen.crossings[0].over_direction - Vec3(0.6, 0, -5).normalized()).norm(), 1e-12);
+  EXPECT_LT((screen.crossings[0].under_direction - Vec3::UnitY()).norm(), 1e-12);
   expect_true_crossings(cam, c, screen.crossings);
 }
 
