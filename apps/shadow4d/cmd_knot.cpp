@@ -1,5 +1,5 @@
 // `shadow4d knot identify|code|compare|relax|flip|resample`: the knot engine from the command
-// line, with --json for scripts. Curves come from any curve file or generator call.
+// line, with --json for scripts. Curves come from any curve file, generator call or scene.
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -26,25 +26,43 @@ using nlohmann::json;
 
 // [SECTION] input
 
-Curve<3> load_knot_curve(const std::string& spec) {
-  const SceneObject obj = load_object(spec);
-  if (const auto* c3 = std::get_if<Curve<3>>(&obj.shape)) return *c3;
-  if (const auto* c4 = std::get_if<Curve<4>>(&obj.shape)) {
-    // A curve of R^4 that lies in w = 0 is a knot of R^3; anything else is not a classical knot.
+// A curve of R^3 from one object; a curve of R^4 only when it lies in w = 0 (anything else is not
+// a classical knot). Throws Error naming `where`.
+Curve<3> knot_curve_of(const Shape& shape, const std::string& where) {
+  if (const auto* c3 = std::get_if<Curve<3>>(&shape)) return *c3;
+  if (const auto* c4 = std::get_if<Curve<4>>(&shape)) {
     Curve<3> c;
     for (const auto& pl : c4->components) {
       Polyline<3> p;
       p.closed = pl.closed;
       for (const auto& q : pl.points) {
         if (std::abs(q.w()) > 1e-12)
-          throw Error(spec + ": a curve of R^4 off the w = 0 space is not a knot of R^3");
+          throw Error(where + ": a curve of R^4 off the w = 0 space is not a knot of R^3");
         p.points.push_back(q.head<3>());
       }
       c.components.push_back(std::move(p));
     }
     return c;
   }
-  throw Error(spec + " is a surface; knot commands need a closed curve");
+  throw Error(where + " is a surface; knot commands need a closed curve");
+}
+
+// A curve file, a generator call, or a scene: its curve objects together, as they are stored (a
+// link when there are several; its surfaces are left out).
+Curve<3> load_knot_curve(const std::string& spec) {
+  const Scene scene = load_scene_or_object(spec);
+  Curve<3> all;
+  for (const SceneObject& obj : scene.objects) {
+    if (!std::holds_alternative<Curve<3>>(obj.shape) && !std::holds_alternative<Curve<4>>(obj.shape))
+      continue;
+    const std::string where = scene.objects.size() > 1 ? spec + ", object '" + obj.name + "'" : spec;
+    for (auto& p : knot_curve_of(obj.shape, where).components) all.components.push_back(std::move(p));
+  }
+  if (all.components.empty()) {
+    if (scene.objects.size() == 1) knot_curve_of(scene.objects[0].shape, spec);  // says what it is
+    throw Error(spec + " has no curve; knot commands need a closed curve");
+  }
+  return all;
 }
 
 // "xz=30,yz=10": plane rotations in degrees, applied in order.
@@ -164,7 +182,8 @@ struct Common {
 };
 
 void add_common(CLI::App* s, Common& c, bool with_view = true) {
-  s->add_option("file", c.file, "curve file (.curve/.txt/.xyz/.vect) or generator call")->required();
+  s->add_option("file", c.file, "curve file (.curve/.txt/.xyz/.vect), generator call, or scene (.json: its curves)")
+      ->required();
   if (with_view) s->add_option("--rotate", c.view, "view rotation, e.g. xz=30,yz=10 (degrees)");
   s->add_flag("--json", c.json_out, "machine-readable output");
 }
