@@ -15,6 +15,7 @@
 #include "io/scene.hpp"
 #include "knots/depth_edit.hpp"
 #include "knots/dynadraw.hpp"
+#include "knots/knot_curve.hpp"
 #include "knots/knot_identify.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
@@ -25,27 +26,6 @@ namespace {
 using nlohmann::json;
 
 // [SECTION] input
-
-// A curve of R^3 from one object; a curve of R^4 only when it lies in w = 0 (anything else is not
-// a classical knot). Throws Error naming `where`.
-Curve<3> knot_curve_of(const Shape& shape, const std::string& where) {
-  if (const auto* c3 = std::get_if<Curve<3>>(&shape)) return *c3;
-  if (const auto* c4 = std::get_if<Curve<4>>(&shape)) {
-    Curve<3> c;
-    for (const auto& pl : c4->components) {
-      Polyline<3> p;
-      p.closed = pl.closed;
-      for (const auto& q : pl.points) {
-        if (std::abs(q.w()) > 1e-12)
-          throw Error(where + ": a curve of R^4 off the w = 0 space is not a knot of R^3");
-        p.points.push_back(q.head<3>());
-      }
-      c.components.push_back(std::move(p));
-    }
-    return c;
-  }
-  throw Error(where + " is a surface; knot commands need a closed curve");
-}
 
 // A curve file, a generator call, or a scene: its curve objects together, as they are stored (a
 // link when there are several; its surfaces are left out).
@@ -60,7 +40,7 @@ Curve<3> load_knot_curve(const std::string& spec) {
   }
   if (all.components.empty()) {
     if (scene.objects.size() == 1) knot_curve_of(scene.objects[0].shape, spec);  // says what it is
-    throw Error(spec + " has no curve; knot commands need a closed curve");
+    throw Error(spec + " has no curve; a knot is a closed curve");
   }
   return all;
 }
@@ -134,7 +114,7 @@ json identification_json(const KnotIdentification& id) {
 }
 
 void print_identification(const KnotIdentification& id, const std::string& indent = "") {
-  std::cout << indent << "knot: " << id.name << (id.proven ? "" : "  [not proven]") << "\n";
+  std::cout << indent << "knot: " << id.headline() << "\n";
   const auto& v = id.invariants;
   if (id.candidates.size() > 1) {
     std::cout << indent << "candidates (the invariants cannot decide):\n";

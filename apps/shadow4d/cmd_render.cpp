@@ -33,7 +33,10 @@ const CommandRegistrar kRender(
         IntersectionSummary drawn;
         write_png(render_offscreen(scene, w, h, &drawn), args->out);
         std::cout << args->out << "\n";
-        if (drawn.computed) std::cout << "intersections: " << intersection_text(drawn) << "\n";
+        if (drawn.computed) {
+          std::cout << "intersections: " << intersection_text(drawn) << "\n";
+          for (const std::string& code : drawn.gauss_codes) std::cout << code << "\n";
+        }
       });
     });
 

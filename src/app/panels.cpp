@@ -104,7 +104,7 @@ void Panels::menu_bar(GuiModel& model) {
 // [SECTION] View panel
 void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 510), ImGuiCond_FirstUseEver);
   ImGui::Begin("View");
   ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
   ImGui::Separator();
@@ -131,22 +131,24 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();
   ImGui::Checkbox("flat shadow", &v.shadow);
+  float radius = static_cast<float>(v.tube_radius);
+  if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
+    v.tube_radius = radius;
   ImGui::Checkbox("intersections and crossings", &v.intersections);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
                       "apart in w), magenta where the surface truly meets itself in R^4;\n"
                       "for curves, a white dot on the over strand of each crossing of this view");
-  if (v.intersections && model.intersections.computed)
+  if (v.intersections && model.intersections.computed) {
     ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
-  float radius = static_cast<float>(v.tube_radius);
-  if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
-    v.tube_radius = radius;
+    for (const std::string& code : model.intersections.gauss_codes) ImGui::TextWrapped("%s", code.c_str());
+  }
   ImGui::End();
 }
 
 // [SECTION] Scene panel
 void Panels::scene_panel(GuiModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(10, 470), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(10, 550), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 200), ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
   if (model.scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
@@ -160,10 +162,24 @@ void Panels::scene_panel(GuiModel& model) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("%s", describe_shape(obj.shape).c_str());
     ImGui::PopStyleColor();
+    knot_name(obj);
     ImGui::PopID();
   }
   if (remove >= 0) model.scene.objects.erase(model.scene.objects.begin() + remove);
   ImGui::End();
+}
+
+// A curve's knot, named on request and shown until the curve moves.
+void Panels::knot_name(const SceneObject& obj) {
+  if (!KnotNames::nameable(obj)) return;
+  if (const std::string* line = knot_names_.find(obj)) {
+    ImGui::TextWrapped("%s", line->c_str());
+    return;
+  }
+  if (ImGui::SmallButton("name the knot")) knot_names_.name(obj);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the knot or link of this curve, from its invariants and Regina's census\n"
+                      "(also: shadow4d knot identify FILE)");
 }
 
 // [SECTION] Generator dialog

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/file_browser.hpp"
+#include "app/knot_names.hpp"
 #include "app/view_state.hpp"
 #include "io/scene.hpp"
 #include "render/scene_geometry.hpp"
@@ -38,6 +39,7 @@ class Panels {
   void menu_bar(GuiModel& model);
   void view_panel(GuiModel& model, float fps);
   void scene_panel(GuiModel& model);
+  void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);
 
@@ -47,6 +49,7 @@ class Panels {
   std::string generator_;      // generator whose dialog is open
   Params generator_params_;
   bool generator_dialog_open_ = false;
+  KnotNames knot_names_;  // the Scene panel's named knots
 };
 
 }  // namespace s4d

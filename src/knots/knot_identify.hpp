@@ -43,6 +43,9 @@ struct KnotIdentification {
   Frame<3> frame;         // the view actually used (after any generic perturbation)
   std::vector<KnotIdentification> components;  // links: each component on its own
   std::string link_name;  // links: a well-known name when the link is one ("Hopf link"), else ""
+  // The name as the CLI and the GUI show it: "3_1 (DT 3a_1)", with "  [not proven]" when the
+  // invariants leave other answers open.
+  std::string headline() const { return name + (proven ? "" : "  [not proven]"); }
 };
 
 struct IdentifyOptions {

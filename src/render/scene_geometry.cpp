@@ -6,6 +6,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "core/error.hpp"
+#include "knots/knot_diagram.hpp"
 #include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
 
@@ -158,6 +160,20 @@ void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, D
   sum.crossings = static_cast<int>(found.size());
   sum.crossing_non_generic = screen.non_generic;
   sum.crossing_behind_eye = screen.behind_eye;
+  for (const ScreenImage& im : screen.images) {
+    std::string code = "Gauss code of '" + scene.objects[im.object].name + "' in this view: ";
+    if (!im.whole) {
+      code += "none (part of it is behind the eye)";
+    } else {
+      try {
+        const KnotDiagram diagram = diagram_from_curve(im.image, Frame<3>());
+        code += diagram.crossing_count() > 0 ? diagram.gauss_code() : "no crossings";
+      } catch (const Error& e) {
+        code += std::string("none (") + e.what() + ")";
+      }
+    }
+    sum.gauss_codes.push_back(std::move(code));
+  }
   TubeOptions dot;
   dot.radius = 0.7 * tube;
   dot.sides = 16;
@@ -213,6 +229,7 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       continue;
     }
     Curve<3> image, seen;  // the image's runs, and the same runs where they are drawn
+    bool visible_all = true;
     for (const Polyline<3>& poly : drawn) {
       const std::size_t n = poly.points.size();
       std::vector<Vec3> eye(n);
@@ -225,6 +242,7 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       }
       auto image_of = [](const Vec3& e) { return Vec3(-e.x() / e.z(), -e.y() / e.z(), -1 / e.z()); };
       out.behind_eye += static_cast<int>(hidden);
+      visible_all = visible_all && hidden == 0;
       if (hidden == 0) {
         Polyline<3> img{{}, poly.closed};
         for (const Vec3& e : eye) img.points.push_back(image_of(e));
@@ -272,6 +290,7 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       flush();
     }
     const ShadowCrossingResult<3> r = shadow_crossings<3>(image, Frame<3>());
+    out.images.push_back({static_cast<int>(i), image, visible_all});
     out.non_generic += r.non_generic;
     // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
     // Also the segment's unit direction.

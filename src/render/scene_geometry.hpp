@@ -45,6 +45,10 @@ struct IntersectionSummary : ShadowCurveCounts {  // true_points: the beads draw
   int crossings = 0;
   int crossing_non_generic = 0;  // spots where the image is not a regular diagram
   int crossing_behind_eye = 0;   // curve points the camera cannot see (behind or at the eye)
+  // Per curve object, the Gauss code of its diagram in this view, a line each: "Gauss code of
+  // 'trefoil' in this view: 1, -2, 3, -1, 2, -3", or why it has none (part of it behind the eye,
+  // an open curve, touching strands).
+  std::vector<std::string> gauss_codes;
 };
 
 // A crossing of a curve's image on the screen: the point of each strand there, in shadow space
@@ -55,8 +59,18 @@ struct ScreenCrossing {
   Vec3 over_direction = Vec3::UnitX(), under_direction = Vec3::UnitX();
 };
 
+// A curve object's image on the screen as an orthographic shadow: (x, y) on the screen, depth 1/w
+// (w the distance in front of the eye, so larger is nearer), the camera's perspective included.
+// Cut into open runs where part of it is behind the eye (`whole` false).
+struct ScreenImage {
+  int object = 0;  // index in scene.objects
+  Curve<3> image;
+  bool whole = true;
+};
+
 struct ScreenCrossings {
   std::vector<ScreenCrossing> crossings;
+  std::vector<ScreenImage> images;  // one per curve object
   int non_generic = 0;      // spots where the image is not a regular diagram (a crossing at a
                             // vertex, overlapping strands): turning the view a little clears them
   int behind_eye = 0;       // curve points closer to the eye than the near plane, or behind it:

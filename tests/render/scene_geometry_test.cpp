@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "knots/knot_diagram.hpp"
 #include "render/test_shapes.hpp"
 
 namespace s4d {
@@ -228,6 +229,41 @@ TEST(SceneGeometry, CrossingsOfTheTrefoilsImageAreItsDiagram) {
     EXPECT_LT(best, 2 * sc.view.tube_radius);
   }
   EXPECT_GT(dots, 0);
+}
+
+// The Gauss code of the view is the knot engine's code of the same view: the camera on the +z
+// axis sees what Frame<3>() sees, over and under included (the mirror image has them swapped).
+TEST(SceneGeometry, GaussCodeOfTheViewIsTheKnotEnginesCode) {
+  for (const double mirror : {1.0, -1.0}) {
+    Curve<3> k = test::trefoil();
+    for (Vec3& p : k.components[0].points) p.z() *= mirror;
+    Scene sc = test::scene_of(k);
+    sc.view.intersections = true;
+    const SceneGeometry g = build_scene_geometry(sc, 1.0);
+    const std::string code = diagram_from_curve(k, Frame<3>()).gauss_code();
+    EXPECT_EQ(code, mirror > 0 ? "-1, 2, -3, 1, -2, 3" : "1, -2, 3, -1, 2, -3");
+    ASSERT_EQ(g.intersections.gauss_codes.size(), 1u);
+    EXPECT_EQ(g.intersections.gauss_codes[0], "Gauss code of 'object' in this view: " + code);
+  }
+}
+
+// Without a whole image (part of the curve behind the eye) or a closed curve, there is no diagram,
+// and the line says why.
+TEST(SceneGeometry, GaussCodeSaysWhyAViewHasNone) {
+  Scene sc = test::scene_of(test::trefoil());
+  sc.view.trackball = Eigen::AngleAxisd(0.5, Vec3::UnitX()) * Eigen::AngleAxisd(0.3, Vec3::UnitY());
+  sc.view.distance = 0.15;
+  sc.view.intersections = true;
+  ASSERT_EQ(build_scene_geometry(sc, 1.0).intersections.gauss_codes.size(), 1u);
+  EXPECT_EQ(build_scene_geometry(sc, 1.0).intersections.gauss_codes[0],
+            "Gauss code of 'object' in this view: none (part of it is behind the eye)");
+  Curve<3> open;
+  open.components.push_back({{Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 1), Vec3(0, -1, 1)}, false});
+  Scene so = test::scene_of(open);
+  so.view.intersections = true;
+  const auto codes = build_scene_geometry(so, 1.0).intersections.gauss_codes;
+  ASSERT_EQ(codes.size(), 1u);
+  EXPECT_NE(codes[0].find("in this view: none ("), std::string::npos) << codes[0];
 }
 
 // Close up and turned, perspective moves the crossings of the image away from those of any
