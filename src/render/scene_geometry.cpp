@@ -149,9 +149,23 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
   return d;
 }
 
+// The line of IntersectionSummary::gauss_codes for one curve's image: the knot engine's diagram
+// of it, seen as the shadow it is.
+std::string gauss_code_line(const Scene& scene, const ScreenImage& im) {
+  std::string line = "Gauss code of '" + scene.objects[im.object].name + "' in this view: ";
+  if (!im.whole) return line + "none (part of it is behind the eye)";
+  try {
+    const KnotDiagram diagram = diagram_from_curve(im.image, Frame<3>());
+    return line + (diagram.crossing_count() > 0 ? diagram.gauss_code() : "no crossings");
+  } catch (const Error& e) {
+    return line + "none (" + e.what() + ")";
+  }
+}
+
 // For each crossing of the curves' image, a dot on the near side of the over strand's tube
-// (radius `tube`), facing the eye; added to `d` (the overlay).
-void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, DrawObject& d,
+// (radius `tube`), facing the eye, added to `d` (the overlay); the crossings and each curve's
+// Gauss code in this view go to `sum`.
+void add_crossings(const Scene& scene, const Camera& camera, double tube, DrawObject& d,
                         IntersectionSummary& sum) {
   for (const SceneObject& obj : scene.objects) sum.curve_objects += !is_surface(obj.shape);
   if (sum.curve_objects == 0) return;
@@ -160,20 +174,7 @@ void add_crossing_beads(const Scene& scene, const Camera& camera, double tube, D
   sum.crossings = static_cast<int>(found.size());
   sum.crossing_non_generic = screen.non_generic;
   sum.crossing_behind_eye = screen.behind_eye;
-  for (const ScreenImage& im : screen.images) {
-    std::string code = "Gauss code of '" + scene.objects[im.object].name + "' in this view: ";
-    if (!im.whole) {
-      code += "none (part of it is behind the eye)";
-    } else {
-      try {
-        const KnotDiagram diagram = diagram_from_curve(im.image, Frame<3>());
-        code += diagram.crossing_count() > 0 ? diagram.gauss_code() : "no crossings";
-      } catch (const Error& e) {
-        code += std::string("none (") + e.what() + ")";
-      }
-    }
-    sum.gauss_codes.push_back(std::move(code));
-  }
+  for (const ScreenImage& im : screen.images) sum.gauss_codes.push_back(gauss_code_line(scene, im));
   TubeOptions dot;
   dot.radius = 0.7 * tube;
   dot.sides = 16;
@@ -400,7 +401,7 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
   if (view.intersections) {
     // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
     g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
-    add_crossing_beads(scene, g.camera, radius, g.overlays.back(), g.intersections);
+    add_crossings(scene, g.camera, radius, g.overlays.back(), g.intersections);
   }
   return g;
 }
