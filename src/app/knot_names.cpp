@@ -27,33 +27,55 @@ std::size_t points_hash(const Shape& shape) {
       shape);
   return h;
 }
+
+std::string identification_line(const SceneObject& obj) {
+  try {
+    return "knot: " + identify_knot(knot_curve_of(obj.shape, "'" + obj.name + "'")).headline();
+  } catch (const Error& e) {
+    return e.what();
+  }
+}
 }  // namespace
 
 bool KnotNames::nameable(const SceneObject& obj) {
   return std::holds_alternative<Curve<3>>(obj.shape) || std::holds_alternative<Curve<4>>(obj.shape);
 }
 
-const std::string* KnotNames::find(const SceneObject& obj) {
-  const auto it = std::find_if(named_.begin(), named_.end(),
-                               [&](const Named& n) { return n.object == obj.name; });
-  if (it == named_.end()) return nullptr;
-  if (it->points_hash != points_hash(obj.shape)) {
-    named_.erase(it);
-    return nullptr;
+KnotNames::Named& KnotNames::entry(const SceneObject& obj, std::size_t hash) {
+  auto it = std::find_if(named_.begin(), named_.end(),
+                         [&](const Named& n) { return n.object == obj.name; });
+  if (it == named_.end()) it = named_.insert(named_.end(), Named{obj.name, hash, false, {}});
+  if (it->points_hash != hash) *it = Named{obj.name, hash, false, {}};
+  return *it;
+}
+
+const std::string* KnotNames::live(const SceneObject& obj) {
+  const std::size_t hash = points_hash(obj.shape);
+  const bool known = std::any_of(named_.begin(), named_.end(), [&](const Named& n) {
+    return n.object == obj.name && n.points_hash == hash;
+  });
+  Named& e = entry(obj, hash);
+  if (!known) {
+    // Named now unless its diagram is large; a bad curve is named now too (its line says why).
+    bool small = true;
+    try {
+      const Curve<3> c = knot_curve_of(obj.shape, obj.name);
+      small = diagram_from_curve(c, Frame<3>()).crossing_count() <= kLiveCrossings;
+    } catch (const Error&) {
+    }
+    if (small) {
+      e.line = identification_line(obj);
+      e.named = true;
+    }
   }
-  return &it->line;
+  return e.named ? &e.line : nullptr;
 }
 
 const std::string& KnotNames::name(const SceneObject& obj) {
-  std::string line;
-  try {
-    line = "knot: " + identify_knot(knot_curve_of(obj.shape, "'" + obj.name + "'")).headline();
-  } catch (const Error& e) {
-    line = e.what();
-  }
-  std::erase_if(named_, [&](const Named& n) { return n.object == obj.name; });
-  named_.push_back({obj.name, points_hash(obj.shape), std::move(line)});
-  return named_.back().line;
+  Named& e = entry(obj, points_hash(obj.shape));
+  e.line = identification_line(obj);
+  e.named = true;
+  return e.line;
 }
 
 }  // namespace s4d

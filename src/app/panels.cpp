@@ -169,17 +169,17 @@ void Panels::scene_panel(GuiModel& model) {
   ImGui::End();
 }
 
-// A curve's knot, named on request and shown until the curve moves.
+// A curve's knot: named live when it is small (KnotNames), on request when it is not.
 void Panels::knot_name(const SceneObject& obj) {
   if (!KnotNames::nameable(obj)) return;
-  if (const std::string* line = knot_names_.find(obj)) {
+  if (const std::string* line = knot_names_.live(obj)) {
     ImGui::TextWrapped("%s", line->c_str());
     return;
   }
   if (ImGui::SmallButton("name the knot")) knot_names_.name(obj);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the knot or link of this curve, from its invariants and Regina's census\n"
-                      "(also: shadow4d knot identify FILE)");
+    ImGui::SetTooltip("more than %d crossings: naming it may take a while\n"
+                      "(also: shadow4d knot identify FILE)", KnotNames::kLiveCrossings);
 }
 
 // [SECTION] Generator dialog
