@@ -19,6 +19,7 @@
 #include "knots/knot_identify.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
+#include "knots/sketch.hpp"
 
 namespace s4d::cli {
 namespace {
@@ -307,8 +308,9 @@ void setup(CLI::App& knot) {
                 << " chords refused to avoid a pass-through); wrote " << resample_out << "\n";
   });
 
-  // A sketched stroke (cursor samples, one per line, as the GUI or a tablet records them) smoothed
-  // the way the sketching tool does it, so a stroke can be reproduced and inspected headless.
+  // A sketched stroke (cursor samples, one per line, as the GUI's sketch tool or a tablet records
+  // them) smoothed the way the sketching tool does it, or with --knot made into its knot, so a
+  // sketch can be reproduced and inspected headless.
   static std::string sketch_in, sketch_out;
   static double sketch_dt = 1.0 / 120.0;
   static DynadrawParams pen;
@@ -327,8 +329,30 @@ void setup(CLI::App& knot) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e9));
   sketch->add_flag("--json", sketch_json, "machine-readable output");
+  static bool sketch_knot = false;
+  sketch->add_flag("--knot", sketch_knot,
+                   "make the closed knot the GUI's sketch tool makes: samples are x y u, u = 1 where "
+                   "the stroke passes under (the modifier held), 0 where it passes over");
   sketch->callback([] {
     const Curve<3> raw = load_knot_curve(sketch_in);
+    if (sketch_knot) {
+      std::vector<SketchSample> stroke;
+      for (const Vec3& q : raw.components.at(0).points)
+        stroke.push_back({q.head<2>(), sketch_dt * static_cast<double>(stroke.size()), q.z() >= 0.5});
+      SketchOptions o;
+      o.pen = pen;
+      const SketchedKnot k = knot_from_sketch(stroke, o);
+      write_shape_file(k.curve, sketch_out);
+      const KnotIdentification id = identify_knot(k.curve);
+      if (sketch_json)
+        std::cout << json{{"points", k.curve.point_count()}, {"crossings", k.crossings},
+                          {"gauss", diagram_from_curve(k.curve, Frame<3>()).gauss_code()},
+                          {"name", id.name}, {"proven", id.proven}}.dump(2) << "\n";
+      else
+        std::cout << "sketched a knot of " << k.curve.point_count() << " points, " << k.crossings
+                  << " crossing(s): " << id.headline() << "; wrote " << sketch_out << "\n";
+      return;
+    }
     Curve<3> smooth;
     for (const auto& comp : raw.components) {
       Polyline<3> p;

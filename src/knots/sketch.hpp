@@ -1,0 +1,35 @@
+// Sketching a knot in a plane (the paper's section 4.2): the hand's stroke is smoothed with
+// Dynadraw and closed; where it crosses what it has already drawn, the new strand passes over,
+// or under while the user holds the "under" modifier (the paper's explicit over/under choice);
+// the depth is then smoothed without changing any choice.
+#pragma once
+#include <span>
+
+#include "knots/dynadraw.hpp"
+#include "shape/curve.hpp"
+
+namespace s4d {
+
+struct SketchSample {
+  Vec2 at = Vec2::Zero();  // the cursor, in the sketch plane
+  double time = 0;         // seconds since the stroke began (never decreasing)
+  bool under = false;      // the modifier held: this part of the stroke passes under
+};
+
+struct SketchOptions {
+  DynadrawParams pen;
+  double spacing = 0;       // of the knot's points; 0: 1/120 of the stroke's size
+  double clearance = 0.05;  // depth gap at every crossing, × the stroke's size
+};
+
+struct SketchedKnot {
+  Curve<3> curve;     // one closed component: (x, y) over the smoothed stroke, z its depth
+                      // (towards the viewer, as Frame<3>() sees it)
+  int crossings = 0;  // of its diagram in that view
+};
+
+// Throws s4d::Error for a stroke of fewer than 3 samples, with non-finite values or times that go
+// back, with no extent, or whose smoothed path runs along itself (draw it again).
+SketchedKnot knot_from_sketch(std::span<const SketchSample> stroke, const SketchOptions& options = {});
+
+}  // namespace s4d
