@@ -11,6 +11,7 @@
 
 #include "app/haptics_window.hpp"
 #include "app/panels.hpp"
+#include "app/sketch_tool.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
 
@@ -20,18 +21,60 @@ namespace {
 
 void glfw_error(int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); }
 
+// While sketching, the left button draws (shift: the stroke passes under); on release the
+// stroke becomes a knot added to the scene.
+void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const Camera& camera,
+                   const Vec2& cursor, bool captured) {
+  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE) && !ImGui::GetIO().WantTextInput) {
+    model.sketching = false;
+    model.status = "";
+  }
+  if (!model.sketching) {
+    tool.cancel();
+    return;
+  }
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  const Vec2 size(w, h);
+  const bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  const bool under = ImGui::GetIO().KeyShift;
+  if (pressed && !tool.drawing() && !captured) tool.begin(camera, cursor, size, glfwGetTime(), under);
+  else if (pressed && tool.drawing()) tool.add(cursor, size, glfwGetTime(), under);
+  else if (!pressed && tool.drawing()) {
+    try {
+      SceneObject obj;
+      obj.shape = tool.finish(model.scene.frame);
+      obj.name = "sketch-" + std::to_string(++model.created);
+      model.scene.objects.push_back(std::move(obj));
+      model.scene.view.intersections = true;  // its crossings and Gauss code
+      model.status = std::string("sketched ") + model.scene.objects.back().name + "; " + kSketchHelp;
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  // The stroke so far: white where it passes over, blue where under.
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const auto& pts = tool.screen();
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    draw->AddLine(ImVec2(float(pts[i - 1].first.x()), float(pts[i - 1].first.y())),
+                  ImVec2(float(pts[i].first.x()), float(pts[i].first.y())),
+                  pts[i].second ? IM_COL32(90, 150, 255, 255) : IM_COL32(240, 240, 240, 255), 3.0f);
+}
+
 // Mouse drags that ImGui does not want go to the view: plain = trackball, shift = xw/yw,
-// ctrl = zw; the wheel zooms.
-void handle_mouse(GLFWwindow* window, GuiModel& model, double& last_x, double& last_y) {
+// ctrl = zw; the wheel zooms. While sketching, the left button draws instead.
+void handle_mouse(GLFWwindow* window, GuiModel& model, SketchTool& sketch, const Camera& camera,
+                  double& last_x, double& last_y) {
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   const double dx = x - last_x, dy = y - last_y;
   last_x = x;
   last_y = y;
   const ImGuiIO& io = ImGui::GetIO();
+  handle_sketch(window, model, sketch, camera, Vec2(x, y), io.WantCaptureMouse);
   if (io.WantCaptureMouse) return;
   if (io.MouseWheel != 0) model.view.scroll(io.MouseWheel);
-  if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) return;
+  if (model.sketching || glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) return;
   int w = 0, h = 0;
   glfwGetWindowSize(window, &w, &h);
   const DragMode mode = io.KeyShift  ? DragMode::kRotateW
@@ -89,6 +132,7 @@ int run_gui_app(const GuiOptions& options) {
   {
     Renderer renderer;
     Panels panels;
+    SketchTool sketch;
     HapticsWindow haptics;
     if (!options.device.empty()) haptics.start(options.device);
     GuiModel model;
@@ -104,7 +148,7 @@ int run_gui_app(const GuiOptions& options) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
-      handle_mouse(window, model, last_x, last_y);
+      handle_mouse(window, model, sketch, renderer.camera(), last_x, last_y);
       handle_keys(model);
       panels.draw(model, ImGui::GetIO().Framerate);
       if (model.open_haptics) {

@@ -72,6 +72,11 @@ void Panels::draw(GuiModel& model, float fps) {
 void Panels::menu_bar(GuiModel& model) {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("New (empty scene)")) {
+      model.scene = Scene{};
+      model.view.reset(model.scene);
+      model.status = "empty scene: Create adds objects, or sketch a knot";
+    }
     if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
@@ -80,6 +85,14 @@ void Panels::menu_bar(GuiModel& model) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Create")) {
+    if (ImGui::MenuItem("Sketch a knot", "Esc stops", &model.sketching))
+      model.status = model.sketching ? kSketchHelp : "";
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("draw a closed curve with the left button in the plane facing you;\n"
+                        "where it crosses what is drawn it passes over, or under with shift held.\n"
+                        "It becomes a knot of R^3, named live in the Scene panel.\n"
+                        "(also: shadow4d knot sketch STROKE --knot --out KNOT)");
+    ImGui::Separator();
     for (const auto& g : generator_catalogue()) {
       const std::string label = g.name + (g.surface ? "  (surface, R^" : "  (curve, R^") +
                                 std::to_string(g.dim) + ")";

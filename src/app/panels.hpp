@@ -12,6 +12,10 @@
 
 namespace s4d {
 
+// The status line while sketching (Create > Sketch a knot).
+inline constexpr const char* kSketchHelp =
+    "sketch: drag to draw a closed curve; hold shift where it passes under; Esc stops";
+
 struct GuiModel {
   Scene scene;                 // what is shown (its frame/view are rewritten from `view` each frame)
   ViewState view;
@@ -23,6 +27,7 @@ struct GuiModel {
   int created = 0;             // counter for unique object names
   bool open_haptics = false;   // request from the menu: show the haptics panel (starts the loop)
   IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
+  bool sketching = false;      // Create > Sketch a knot: the left button draws (SketchTool)
 };
 
 class Panels {

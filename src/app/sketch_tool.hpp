@@ -1,0 +1,51 @@
+// The window's knot sketching (Create > Sketch a knot; the paper's section 4.2): the left button
+// draws in the plane through the view's centre that faces the eye, shift held where the stroke
+// should pass under what is already drawn; on release the stroke becomes a knot of R^3
+// (knot_from_sketch), exactly where it was drawn. `shadow4d knot sketch FILE --knot` makes the
+// same knot from a recorded stroke.
+#pragma once
+#include <vector>
+
+#include "core/frame.hpp"
+#include "knots/sketch.hpp"
+#include "render/camera.hpp"
+
+namespace s4d {
+
+// The sketch plane of a view: through camera.target, spanned by the camera's right and up axes.
+struct SketchPlane {
+  Vec3 centre = Vec3::Zero(), right = Vec3::UnitX(), up = Vec3::UnitY(), toward_eye = Vec3::UnitZ();
+  explicit SketchPlane(const Camera& camera);
+  SketchPlane() = default;
+  // Where the line of sight through `cursor` (window pixels, y down, in a window of `window`
+  // pixels) meets the plane, in (right, up) coordinates; false when it does not (parallel, or
+  // behind the eye).
+  bool cursor_to_plane(const Camera& camera, const Vec2& cursor, const Vec2& window, Vec2& at) const;
+  // A point given as (right, up, toward the eye) coordinates, in shadow space.
+  Vec3 to_shadow(const Vec3& local) const { return centre + local.x() * right + local.y() * up + local.z() * toward_eye; }
+};
+
+class SketchTool {
+ public:
+  bool drawing() const { return !stroke_.empty(); }
+  // Starts a stroke under the cursor, in the plane of `camera`'s view.
+  void begin(const Camera& camera, const Vec2& cursor, const Vec2& window, double time, bool under);
+  // The next cursor sample (the camera of the stroke's start is kept: the view may refit as the
+  // scene grows, the plane does not move).
+  void add(const Vec2& cursor, const Vec2& window, double time, bool under);
+  // The cursor samples so far, in window pixels, with their modifier, for drawing the stroke.
+  const std::vector<std::pair<Vec2, bool>>& screen() const { return screen_; }
+  // Ends the stroke: its knot as a curve of R^3 that `frame` shows where it was drawn. Throws
+  // s4d::Error for a bad stroke, or when `frame` turns w into the view (a knot of R^3 sits at
+  // w = 0 and would be seen squashed): reset the 4D rotation first.
+  Curve<3> finish(const Frame<4>& frame);
+  void cancel();
+
+ private:
+  Camera camera_;
+  SketchPlane plane_;
+  std::vector<SketchSample> stroke_;
+  std::vector<std::pair<Vec2, bool>> screen_;
+};
+
+}  // namespace s4d

@@ -1,0 +1,89 @@
+// The window's sketch tool without a window: cursor pixels map onto the sketch plane exactly as
+// the camera draws it, and a stroke drawn through the camera becomes its knot where it was drawn.
+#include "app/sketch_tool.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "knots/knot_identify.hpp"
+
+namespace s4d {
+namespace {
+
+const Vec2 kWindow(800, 600);
+
+Camera turned_camera() {
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.6, Vec3(1, 2, 0.5).normalized()));
+  return make_camera(BoundingSphere{Vec3(0.3, -0.2, 1.0), 2.0}, q, 0, 40, kWindow.x() / kWindow.y(), 1.2);
+}
+
+// Window pixels (y down) of a point, through the camera's own matrices.
+Vec2 pixel_of(const Camera& c, const Vec3& p) {
+  const Eigen::Vector4d clip = c.projection() * c.view() * p.homogeneous();
+  const Vec2 ndc = clip.head<2>() / clip.w();
+  return Vec2((ndc.x() + 1) / 2 * kWindow.x(), (1 - ndc.y()) / 2 * kWindow.y());
+}
+
+TEST(SketchTool, CursorPixelsLandOnThePlaneWhereTheCameraDrawsThem) {
+  const Camera c = turned_camera();
+  const SketchPlane plane(c);
+  for (const Vec2& local : {Vec2(0, 0), Vec2(0.7, -0.4), Vec2(-1.1, 0.9)}) {
+    const Vec3 p = plane.to_shadow(Vec3(local.x(), local.y(), 0));
+    Vec2 at;
+    ASSERT_TRUE(plane.cursor_to_plane(c, pixel_of(c, p), kWindow, at));
+    EXPECT_LT((at - local).norm(), 1e-9);
+  }
+  Vec2 at;
+  EXPECT_FALSE(plane.cursor_to_plane(c, Vec2(1, 1), Vec2(0, 0), at)) << "no window";
+}
+
+// The trefoil's shadow drawn through the camera, with shift held where it passes under.
+void draw_trefoil(SketchTool& tool, const Camera& c, double scale) {
+  const SketchPlane plane(c);
+  const int n = 240;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * 0.99 * i / (n - 1);
+    const Vec3 local(scale * (std::sin(t) + 2 * std::sin(2 * t)), scale * (std::cos(t) - 2 * std::cos(2 * t)), 0);
+    const Vec2 px = pixel_of(c, plane.to_shadow(local));
+    const bool under = -std::sin(3 * t) < 0;
+    if (i == 0) tool.begin(c, px, kWindow, 10.0, under);
+    else tool.add(px, kWindow, 10.0 + i / 120.0, under);
+  }
+}
+
+TEST(SketchTool, AStrokeBecomesItsKnotWhereItWasDrawn) {
+  const Camera c = turned_camera();
+  SketchTool tool;
+  draw_trefoil(tool, c, 0.3);
+  EXPECT_TRUE(tool.drawing());
+  EXPECT_EQ(tool.screen().size(), 240u);
+  // Seen through a frame that turns R^3 (not w), the knot lies where it was drawn.
+  Frame<4> frame;
+  frame.rotate(Plane{0, 2}, 0.4);
+  frame.rotate(Plane{1, 2}, -0.3);
+  const Curve<3> k = tool.finish(frame);
+  EXPECT_FALSE(tool.drawing());
+  EXPECT_EQ(identify_knot(k).name, "3_1 (DT 3a_1)");
+  const SketchPlane plane(c);
+  for (const Vec3& p : k.components[0].points) {
+    const Vec3 shown = frame.shadow(Vec4(p.x(), p.y(), p.z(), 0));
+    EXPECT_LT(std::abs((shown - plane.centre).dot(plane.toward_eye)), 0.2) << "near the sketch plane";
+    EXPECT_LT((shown - plane.centre).norm(), 0.3 * 3.2) << "within the drawing";
+  }
+}
+
+TEST(SketchTool, AFrameTurnedIntoWIsRefusedAndTheStrokeDropped) {
+  const Camera c = turned_camera();
+  SketchTool tool;
+  draw_trefoil(tool, c, 0.3);
+  Frame<4> frame;
+  frame.rotate(Plane{0, 3}, 0.5);
+  EXPECT_THROW(tool.finish(frame), Error);
+  EXPECT_FALSE(tool.drawing());
+}
+
+}  // namespace
+}  // namespace s4d
