@@ -40,7 +40,10 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
   const bool under = ImGui::GetIO().KeyShift;
   if (pressed && !tool.drawing() && !captured) tool.begin(camera, cursor, size, glfwGetTime(), under);
   else if (pressed && tool.drawing()) tool.add(cursor, size, glfwGetTime(), under);
-  else if (!pressed && tool.drawing()) {
+  else if (!pressed && tool.drawing() && tool.screen().size() < 3) {
+    tool.cancel();
+    model.status = std::string("a click is not a stroke; ") + kSketchHelp;
+  } else if (!pressed && tool.drawing()) {
     try {
       SceneObject obj;
       obj.shape = tool.finish(model.scene.frame);
