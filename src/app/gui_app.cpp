@@ -14,6 +14,7 @@
 #include "app/sketch_tool.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
+#include "render/view_edit.hpp"
 
 namespace s4d {
 
@@ -46,7 +47,7 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
   } else if (!pressed && tool.drawing()) {
     try {
       SceneObject obj;
-      obj.shape = tool.finish(model.scene.frame);
+      obj.shape = tool.finish();
       obj.name = "sketch-" + std::to_string(++model.created);
       model.scene.objects.push_back(std::move(obj));
       model.scene.view.intersections = true;  // its crossings and Gauss code
@@ -64,6 +65,35 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
                   pts[i].second ? IM_COL32(90, 150, 255, 255) : IM_COL32(240, 240, 240, 255), 3.0f);
 }
 
+// A right click on a crossing's dot changes that crossing of the curve, as seen (the paper's
+// "what does changing this crossing give?").
+void change_crossing_at(GLFWwindow* window, GuiModel& model, const Camera& camera, const Vec2& cursor) {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  const Mat4 m = camera.projection() * camera.view();
+  const ScreenCrossing* best = nullptr;
+  double best_px = 14;  // pixels: about a dot's size
+  const ScreenCrossings found = screen_crossings(model.scene, camera);
+  for (const ScreenCrossing& c : found.crossings) {
+    const Eigen::Vector4d clip = m * c.over.homogeneous();
+    const Vec2 px((clip.x() / clip.w() + 1) / 2 * w, (1 - clip.y() / clip.w()) / 2 * h);
+    if ((px - cursor).norm() < best_px) {
+      best_px = (px - cursor).norm();
+      best = &c;
+    }
+  }
+  if (!best) return;
+  try {
+    SceneObject& obj = model.scene.objects[best->object];
+    obj.shape = change_crossing_in_view(model.scene, camera, *best, 2.5 * model.scene.view.tube_radius);
+    obj.generator.reset();  // edited geometry: saved as a file beside the scene
+    obj.source_path.clear();
+    model.status = "changed a crossing of '" + obj.name + "'";
+  } catch (const std::exception& e) {
+    model.error = e.what();
+  }
+}
+
 // Mouse drags that ImGui does not want go to the view: plain = trackball, shift = xw/yw,
 // ctrl = zw; the wheel zooms. While sketching, the left button draws instead.
 void handle_mouse(GLFWwindow* window, GuiModel& model, SketchTool& sketch, const Camera& camera,
@@ -77,6 +107,7 @@ void handle_mouse(GLFWwindow* window, GuiModel& model, SketchTool& sketch, const
   handle_sketch(window, model, sketch, camera, Vec2(x, y), io.WantCaptureMouse);
   if (io.WantCaptureMouse) return;
   if (io.MouseWheel != 0) model.view.scroll(io.MouseWheel);
+  if (!model.sketching && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) change_crossing_at(window, model, camera, Vec2(x, y));
   if (model.sketching || glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) return;
   int w = 0, h = 0;
   glfwGetWindowSize(window, &w, &h);

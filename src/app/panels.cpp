@@ -151,7 +151,8 @@ void Panels::view_panel(GuiModel& model, float fps) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
                       "apart in w), magenta where the surface truly meets itself in R^4;\n"
-                      "for curves, a white dot on the over strand of each crossing of this view");
+                      "for curves, a white dot on the over strand of each crossing of this view;\n"
+                      "right-click a dot to change that crossing");
   if (v.intersections && model.intersections.computed) {
     ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
     for (const std::string& code : model.intersections.gauss_codes) ImGui::TextWrapped("%s", code.c_str());

@@ -47,17 +47,12 @@ void SketchTool::add(const Vec2& cursor, const Vec2& window, double time, bool u
   screen_.emplace_back(cursor, under);
 }
 
-Curve<3> SketchTool::finish(const Frame<4>& frame) {
+Curve<3> SketchTool::finish() {
   const std::vector<SketchSample> stroke = std::move(stroke_);
   cancel();
-  // Shadow space shows a point p of R^3 at B p, B the frame's 3 × 3 block; without w in the view,
-  // B is a rotation and the sketch's points are B^T of where they were drawn.
-  const Mat<4>& r = frame.matrix();
-  if (!(std::abs(r(3, 3)) > 1 - 1e-9))
-    throw Error("a sketch is a knot of R^3: turn the 4D rotation back (xw, yw, zw) to sketch");
-  const Eigen::Matrix3d b = r.topLeftCorner<3, 3>().transpose();
+  // Objects of R^3 are drawn as they are, so the knot's points are where they were drawn.
   SketchedKnot k = knot_from_sketch(stroke);
-  for (Vec3& p : k.curve.components[0].points) p = b.transpose() * plane_.to_shadow(p);
+  for (Vec3& p : k.curve.components[0].points) p = plane_.to_shadow(p);
   return k.curve;
 }
 

@@ -6,7 +6,6 @@
 #pragma once
 #include <vector>
 
-#include "core/frame.hpp"
 #include "knots/sketch.hpp"
 #include "render/camera.hpp"
 
@@ -35,10 +34,9 @@ class SketchTool {
   void add(const Vec2& cursor, const Vec2& window, double time, bool under);
   // The cursor samples so far, in window pixels, with their modifier, for drawing the stroke.
   const std::vector<std::pair<Vec2, bool>>& screen() const { return screen_; }
-  // Ends the stroke: its knot as a curve of R^3 that `frame` shows where it was drawn. Throws
-  // s4d::Error for a bad stroke, or when `frame` turns w into the view (a knot of R^3 sits at
-  // w = 0 and would be seen squashed): reset the 4D rotation first.
-  Curve<3> finish(const Frame<4>& frame);
+  // Ends the stroke: its knot as a curve of R^3, where it was drawn. Throws s4d::Error for a bad
+  // stroke.
+  Curve<3> finish();
   void cancel();
 
  private:

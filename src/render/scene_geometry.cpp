@@ -295,12 +295,12 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
     out.non_generic += r.non_generic;
     // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
     // Also the segment's unit direction.
-    auto on_strand = [&](const SegmentRef& s, double t, Vec3& direction) {
+    auto on_strand = [&](const SegmentRef& s, double t, Vec3& direction, double& u) {
       const auto& poly = seen.components[s.component];
       const auto& img = image.components[s.component];
       const std::size_t k = static_cast<std::size_t>(s.segment), next = (k + 1) % poly.points.size();
       const double inv0 = img.points[k].z(), inv1 = img.points[next].z();
-      const double u = t * inv1 / ((1 - t) * inv0 + t * inv1);
+      u = t * inv1 / ((1 - t) * inv0 + t * inv1);
       const Vec3 along = poly.points[next] - poly.points[k];
       if (along.norm() > 0) direction = along.normalized();
       return Vec3(poly.points[k] + u * along);
@@ -309,12 +309,19 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       ScreenCrossing s;
       s.object = static_cast<int>(i);
       Vec3 da = Vec3::UnitX(), db = Vec3::UnitX();
-      const Vec3 pa = on_strand(c.a, c.ta, da), pb = on_strand(c.b, c.tb, db);
+      double ua = 0, ub = 0;
+      const Vec3 pa = on_strand(c.a, c.ta, da, ua), pb = on_strand(c.b, c.tb, db, ub);
       const bool a_over = c.a_over();
       s.over = a_over ? pa : pb;
       s.under = a_over ? pb : pa;
       s.over_direction = a_over ? da : db;
       s.under_direction = a_over ? db : da;
+      if (visible_all) {  // the runs are the curve's own components
+        s.over_at = a_over ? c.a : c.b;
+        s.under_at = a_over ? c.b : c.a;
+        s.over_u = a_over ? ua : ub;
+        s.under_u = a_over ? ub : ua;
+      }
       out.crossings.push_back(s);
     }
   }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "io/scene.hpp"
+#include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
 #include "render/camera.hpp"
 #include "render/geometry.hpp"
@@ -57,6 +58,10 @@ struct ScreenCrossing {
   int object = 0;  // index in scene.objects
   Vec3 over, under;
   Vec3 over_direction = Vec3::UnitX(), under_direction = Vec3::UnitX();
+  // Where each strand is on the curve (component, segment, and the parameter along the segment)
+  // when the whole curve is in front of the eye; component -1 otherwise.
+  SegmentRef over_at{-1, -1}, under_at{-1, -1};
+  double over_u = 0, under_u = 0;
 };
 
 // A curve object's image on the screen as an orthographic shadow: (x, y) on the screen, depth 1/w

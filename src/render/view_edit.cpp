@@ -1,0 +1,134 @@
+#include "render/view_edit.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace s4d {
+
+namespace {
+
+// A curve object's points where they are drawn (shadow space), and the way back to its own space.
+struct Drawn {
+  std::vector<Polyline<3>> components;
+  std::vector<std::vector<double>> w;  // curves of R^4: each point's view w, kept by an edit
+  bool four = false;
+};
+
+Drawn drawn_curve(const Scene& scene, const SceneObject& obj) {
+  Drawn d;
+  if (const auto* c3 = std::get_if<Curve<3>>(&obj.shape)) {
+    d.components = c3->components;  // objects of R^3 are drawn as they are
+  } else if (const auto* c4 = std::get_if<Curve<4>>(&obj.shape)) {
+    d.four = true;
+    for (const auto& p : c4->components) {
+      Polyline<3> q{{}, p.closed};
+      std::vector<double> w;
+      for (const Vec4& x : p.points) {
+        const Vec4 v = scene.frame.to_view(x);
+        q.points.push_back(v.head<3>());
+        w.push_back(v[3]);
+      }
+      d.components.push_back(std::move(q));
+      d.w.push_back(std::move(w));
+    }
+  } else {
+    throw Error("'" + obj.name + "' is a surface: only curves have crossings to change");
+  }
+  return d;
+}
+
+Shape to_shape(const Scene& scene, const Drawn& d) {
+  if (d.four) {
+    Curve<4> c;
+    for (std::size_t i = 0; i < d.components.size(); ++i) {
+      Polyline<4> p{{}, d.components[i].closed};
+      for (std::size_t k = 0; k < d.components[i].points.size(); ++k) {
+        const Vec3& s = d.components[i].points[k];
+        p.points.push_back(scene.frame.to_world(Vec4(s.x(), s.y(), s.z(), d.w[i][k])));
+      }
+      c.components.push_back(std::move(p));
+    }
+    return c;
+  }
+  Curve<3> c;
+  c.components = d.components;
+  return c;
+}
+
+// The object's crossings on the screen (normalised device coordinates) with their over strands.
+struct Seen {
+  Vec2 at;
+  SegmentRef over;
+};
+std::vector<Seen> seen_crossings(const Scene& scene, const Camera& camera, int object) {
+  const Mat4 m = camera.projection() * camera.view();
+  std::vector<Seen> out;
+  for (const ScreenCrossing& c : screen_crossings(scene, camera).crossings) {
+    if (c.object != object) continue;
+    const Eigen::Vector4d clip = m * c.over.homogeneous();
+    out.push_back({clip.head<2>() / clip.w(), c.over_at});
+  }
+  return out;
+}
+
+}  // namespace
+
+Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const ScreenCrossing& c,
+                              double clearance) {
+  if (c.object < 0 || c.object >= static_cast<int>(scene.objects.size()))
+    throw Error("no such object for this crossing");
+  const SceneObject& obj = scene.objects[c.object];
+  if (c.under_at.component < 0)
+    throw Error("part of '" + obj.name + "' is behind the eye: step back to change its crossings");
+  const Drawn drawn = drawn_curve(scene, obj);
+  const std::vector<Seen> before = seen_crossings(scene, camera, c.object);
+  const Eigen::Vector4d clip = camera.projection() * camera.view() * c.over.homogeneous();
+  const Vec2 target = clip.head<2>() / clip.w();
+  const Vec3 eye = camera.eye();
+  const Vec3 toward = (eye - c.under).normalized();
+  const double needed = (c.over - c.under).dot(toward) + clearance;
+  const auto& strand = drawn.components.at(c.under_at.component);
+  const int n = static_cast<int>(strand.points.size()), k = c.under_at.segment;
+
+  for (const int reach : {6, 3, 1, 0}) {
+    for (const double scale : {1.0, 2.0, 4.0, 8.0}) {
+      Drawn moved = drawn;
+      auto& pts = moved.components[c.under_at.component].points;
+      for (int d = -reach; d <= reach + 1; ++d) {
+        int j = k + d;
+        if (strand.closed) j = ((j % n) + n) % n;
+        else if (j < 0 || j >= n) continue;
+        const int from_segment = d <= 0 ? -d : d - 1;  // 0 for the segment's own ends
+        const double weight = std::pow(std::cos(0.5 * std::numbers::pi * from_segment / (reach + 1)), 2);
+        const Vec3 to_eye = eye - pts[j];
+        // Along its own line of sight, never past the near side of the eye.
+        const double lift = std::min(weight * scale * needed, 0.9 * to_eye.norm());
+        pts[j] += lift * to_eye.normalized();
+      }
+      Scene edited = scene;
+      edited.objects[c.object].shape = to_shape(scene, moved);
+      const std::vector<Seen> after = seen_crossings(edited, camera, c.object);
+      if (after.size() != before.size()) break;  // a wider bump changed the diagram: narrower
+      bool flipped = false, others_kept = true;
+      for (const Seen& b : before) {
+        const Seen* match = nullptr;
+        for (const Seen& a : after)
+          if ((a.at - b.at).norm() < 1e-7) match = &a;
+        if (!match) {
+          others_kept = false;
+          break;
+        }
+        if ((b.at - target).norm() < 1e-7) flipped = match->over == c.under_at;
+        else others_kept = others_kept && match->over == b.over;
+      }
+      if (!others_kept) break;
+      if (flipped) return edited.objects[c.object].shape;
+    }
+  }
+  throw Error("changing this crossing from this view would change others: turn the view a little");
+}
+
+}  // namespace s4d
