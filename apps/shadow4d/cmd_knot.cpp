@@ -336,12 +336,9 @@ void setup(CLI::App& knot) {
   sketch->callback([] {
     const Curve<3> raw = load_knot_curve(sketch_in);
     if (sketch_knot) {
-      std::vector<SketchSample> stroke;
-      for (const Vec3& q : raw.components.at(0).points)
-        stroke.push_back({q.head<2>(), sketch_dt * static_cast<double>(stroke.size()), q.z() >= 0.5});
       SketchOptions o;
       o.pen = pen;
-      const SketchedKnot k = knot_from_sketch(stroke, o);
+      const SketchedKnot k = knot_from_sketch(stroke_from_curve(raw, sketch_dt), o);
       write_shape_file(k.curve, sketch_out);
       const KnotIdentification id = identify_knot(k.curve);
       if (sketch_json)

@@ -45,15 +45,21 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
     tool.cancel();
     model.status = std::string("a click is not a stroke; ") + kSketchHelp;
   } else if (!pressed && tool.drawing()) {
+    SceneObject obj;
+    bool made = false;
     try {
-      SceneObject obj;
       obj.shape = tool.finish();
+      made = true;
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+    // Kept even when it made no knot (File > Save last sketch stroke), to look into.
+    model.last_stroke = stroke_as_curve(tool.last_stroke());
+    if (made) {
       obj.name = "sketch-" + std::to_string(++model.created);
       model.scene.objects.push_back(std::move(obj));
       model.scene.view.intersections = true;  // its crossings and Gauss code
       model.status = std::string("sketched ") + model.scene.objects.back().name + "; " + kSketchHelp;
-    } catch (const std::exception& e) {
-      model.error = e.what();
     }
   }
   // The stroke so far: white where it passes over, blue where under.

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "io/object_file.hpp"
 #include "shape/describe.hpp"
 
 namespace s4d {
@@ -44,7 +45,8 @@ void legend(ColourMap map, const Scene& scene) {
 Panels::Panels()
     : open_browser_("Open scene, mesh or curve", kOpenExtensions, false),
       save_browser_("Save scene", {".json"}, true),
-      shot_browser_("Save screenshot", {".png"}, true) {}
+      shot_browser_("Save screenshot", {".png"}, true),
+      stroke_browser_("Save last sketch stroke", {".txt"}, true) {}
 
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
@@ -80,6 +82,11 @@ void Panels::menu_bar(GuiModel& model) {
     if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
+    if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, !model.last_stroke.components.empty()))
+      stroke_browser_.open(".");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the cursor samples of the last sketch (x y u), for\n"
+                        "shadow4d knot sketch FILE --knot --out KNOT");
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) model.quit = true;
     ImGui::EndMenu();
@@ -256,6 +263,15 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".json") path += ".json";
       save_scene(to_save, path);
       model.status = "saved " + path.string();
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  if (auto p = stroke_browser_.draw()) {
+    try {
+      const auto path = p->extension() == ".txt" ? *p : std::filesystem::path(p->string() + ".txt");
+      write_shape_file(model.last_stroke, path);
+      model.status = "saved " + path.string() + " (shadow4d knot sketch " + path.filename().string() + " --knot)";
     } catch (const std::exception& e) {
       model.error = e.what();
     }

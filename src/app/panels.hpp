@@ -28,6 +28,7 @@ struct GuiModel {
   bool open_haptics = false;   // request from the menu: show the haptics panel (starts the loop)
   IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
   bool sketching = false;      // Create > Sketch a knot: the left button draws (SketchTool)
+  Curve<3> last_stroke;        // the last sketch's stroke (stroke_as_curve), for File > Save
 };
 
 class Panels {
@@ -51,6 +52,7 @@ class Panels {
   FileBrowser open_browser_;
   FileBrowser save_browser_;
   FileBrowser shot_browser_;
+  FileBrowser stroke_browser_;
   std::string generator_;      // generator whose dialog is open
   Params generator_params_;
   bool generator_dialog_open_ = false;

@@ -48,10 +48,10 @@ void SketchTool::add(const Vec2& cursor, const Vec2& window, double time, bool u
 }
 
 Curve<3> SketchTool::finish() {
-  const std::vector<SketchSample> stroke = std::move(stroke_);
+  last_ = std::move(stroke_);
   cancel();
   // Objects of R^3 are drawn as they are, so the knot's points are where they were drawn.
-  SketchedKnot k = knot_from_sketch(stroke);
+  SketchedKnot k = knot_from_sketch(last_);
   for (Vec3& p : k.curve.components[0].points) p = plane_.to_shadow(p);
   return k.curve;
 }

@@ -38,8 +38,11 @@ class SketchTool {
   // stroke.
   Curve<3> finish();
   void cancel();
+  // The last stroke finished (even one that made no knot), for File > Save last sketch stroke.
+  const std::vector<SketchSample>& last_stroke() const { return last_; }
 
  private:
+  std::vector<SketchSample> last_;
   Camera camera_;
   SketchPlane plane_;
   std::vector<SketchSample> stroke_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,14 +20,14 @@ constexpr double kPenStep = 1.0 / 240.0;
 
 struct PenPoint {
   Vec2 at;
-  bool under;
+  double time;  // when the pen was there
 };
 
 // The pen's path: one point per sample (after the step to it), then a short settle on the last.
 std::vector<PenPoint> pen_path(std::span<const SketchSample> stroke, const DynadrawParams& p) {
   Dynadraw<2> pen(p);
   pen.reset(stroke[0].at);
-  std::vector<PenPoint> path{{stroke[0].at, stroke[0].under}};
+  std::vector<PenPoint> path{{stroke[0].at, stroke[0].time}};
   for (std::size_t i = 1; i < stroke.size(); ++i) {
     const double dt = stroke[i].time - stroke[i - 1].time;
     const int n = std::clamp(static_cast<int>(std::ceil(dt / kPenStep)), 1, 100000);
@@ -34,15 +35,38 @@ std::vector<PenPoint> pen_path(std::span<const SketchSample> stroke, const Dynad
       const double s = double(k) / n;
       pen.step(Vec2((1 - s) * stroke[i - 1].at + s * stroke[i].at), dt / n);
     }
-    path.push_back({pen.position(), stroke[i].under});
+    path.push_back({pen.position(), stroke[i].time});
   }
   for (int k = 0; k < 24; ++k) pen.step(stroke.back().at, kPenStep);
-  path.push_back({pen.position(), stroke.back().under});
+  path.push_back({pen.position(), stroke.back().time + 24 * kPenStep});
   return path;
 }
 
-// The closed path resampled to points `spacing` apart along it, each keeping the modifier of the
-// stretch it comes from.
+// Whether the hand held the modifier where the pen crossed at `at` at `time`: the pen trails the
+// cursor (by about damping / stiffness), so this asks the cursor sample nearest that place among
+// those of the moments before, not the sample of the pen's own moment.
+bool held_under(std::span<const SketchSample> stroke, const Vec2& at, double time) {
+  constexpr double kLookBack = 0.3;  // seconds: several times the pen's lag
+  const SketchSample* best = nullptr;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (const SketchSample& s : stroke) {
+    if (s.time < time - kLookBack) continue;
+    if (s.time > time + kPenStep) break;
+    const double d = (s.at - at).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best = &s;
+    }
+  }
+  if (!best) {  // samples sparser than the look-back: the one nearest in time
+    best = &stroke[0];
+    for (const SketchSample& s : stroke)
+      if (std::abs(s.time - time) < std::abs(best->time - time)) best = &s;
+  }
+  return best->under;
+}
+
+// The closed path resampled to points `spacing` apart along it, each with the pen's time there.
 std::vector<PenPoint> resample_closed(const std::vector<PenPoint>& path, double spacing) {
   const std::size_t n = path.size();
   std::vector<double> at(n + 1, 0.0);  // arc length at each point; at[n] closes the loop
@@ -57,7 +81,8 @@ std::vector<PenPoint> resample_closed(const std::vector<PenPoint>& path, double 
     while (seg + 1 < n && at[seg + 1] <= s) ++seg;
     const double len = at[seg + 1] - at[seg];
     const double t = len > 0 ? (s - at[seg]) / len : 0.0;
-    out.push_back({(1 - t) * path[seg].at + t * path[(seg + 1) % n].at, path[seg].under});
+    out.push_back({(1 - t) * path[seg].at + t * path[(seg + 1) % n].at,
+                   (1 - t) * path[seg].time + t * path[(seg + 1) % n].time});
   }
   return out;
 }
@@ -78,6 +103,22 @@ struct StrokePassage {
 };
 
 }  // namespace
+
+Curve<3> stroke_as_curve(std::span<const SketchSample> stroke) {
+  Polyline<3> p{{}, false};
+  for (const SketchSample& s : stroke) p.points.emplace_back(s.at.x(), s.at.y(), s.under ? 1.0 : 0.0);
+  Curve<3> c;
+  c.components.push_back(std::move(p));
+  return c;
+}
+
+std::vector<SketchSample> stroke_from_curve(const Curve<3>& curve, double dt) {
+  if (curve.components.empty() || curve.components[0].points.empty()) throw Error("the stroke has no samples");
+  std::vector<SketchSample> stroke;
+  for (const Vec3& q : curve.components[0].points)
+    stroke.push_back({q.head<2>(), dt * static_cast<double>(stroke.size()), q.z() >= 0.5});
+  return stroke;
+}
 
 SketchedKnot knot_from_sketch(std::span<const SketchSample> stroke, const SketchOptions& options) {
   if (stroke.size() < 3) throw Error("a sketch needs at least 3 cursor samples");
@@ -111,7 +152,10 @@ SketchedKnot knot_from_sketch(std::span<const SketchSample> stroke, const Sketch
       double s = 0, t = 0;
       if (!segments_cross(ring[i].at, ring[(i + 1) % n].at, ring[j].at, ring[(j + 1) % n].at, s, t))
         continue;
-      const double later = ring[j].under ? -lift : lift;
+      // The closing stretch (from the last point back to the first) is the pen's last move.
+      const double t0 = ring[j].time, t1 = j + 1 < n ? ring[j + 1].time : ring[j].time;
+      const Vec2 where = (1 - t) * ring[j].at + t * ring[(j + 1) % n].at;
+      const double later = held_under(stroke, where, (1 - t) * t0 + t * t1) ? -lift : lift;
       passages[i].push_back({s, -later});
       passages[j].push_back({t, later});
       ++crossings;

@@ -4,6 +4,7 @@
 // the depth is then smoothed without changing any choice.
 #pragma once
 #include <span>
+#include <vector>
 
 #include "knots/dynadraw.hpp"
 #include "shape/curve.hpp"
@@ -27,6 +28,13 @@ struct SketchedKnot {
                       // (towards the viewer, as Frame<3>() sees it)
   int crossings = 0;  // of its diagram in that view
 };
+
+// A stroke as the curve file `shadow4d knot sketch FILE --knot` reads: one open polyline of points
+// (x, y, u), u = 1 where the modifier was held. Times are not kept: the reader spaces samples by
+// `dt`, so the pen's smoothing may differ a little but the crossings and their choices do not.
+Curve<3> stroke_as_curve(std::span<const SketchSample> stroke);
+// The inverse: the first component's points, `dt` seconds apart. Throws s4d::Error for no points.
+std::vector<SketchSample> stroke_from_curve(const Curve<3>& curve, double dt);
 
 // Throws s4d::Error for a stroke of fewer than 3 samples, with non-finite values or times that go
 // back, with no extent, or whose smoothed path runs along itself (draw it again).

@@ -77,6 +77,27 @@ TEST(Sketch, DepthStaysNearThePlaneAndTheShadowNearTheStroke) {
   }
 }
 
+// A stroke written as the window saves it and read back as `knot sketch --knot` reads it makes
+// the same knot: samples and choices are kept, and evenly spaced times change only the smoothing.
+TEST(Sketch, AStrokeSavedAndReadBackMakesTheSameKnot) {
+  auto stroke = trefoil_stroke(true);
+  for (std::size_t i = 0; i < stroke.size(); ++i) stroke[i].time = 0.004 * i + 0.001 * (i % 3);  // uneven, never back
+  const Curve<3> file = stroke_as_curve(stroke);
+  ASSERT_EQ(file.components.size(), 1u);
+  EXPECT_FALSE(file.components[0].closed);
+  const auto back = stroke_from_curve(file, 1.0 / 120.0);
+  ASSERT_EQ(back.size(), stroke.size());
+  for (std::size_t i = 0; i < back.size(); ++i) {
+    EXPECT_EQ(back[i].at, stroke[i].at);
+    EXPECT_EQ(back[i].under, stroke[i].under);
+    EXPECT_DOUBLE_EQ(back[i].time, i / 120.0);
+  }
+  const SketchedKnot a = knot_from_sketch(stroke), b = knot_from_sketch(back);
+  EXPECT_EQ(a.crossings, b.crossings);
+  EXPECT_EQ(diagram_from_curve(a.curve, Frame<3>()).gauss_code(), diagram_from_curve(b.curve, Frame<3>()).gauss_code());
+  EXPECT_THROW(stroke_from_curve(Curve<3>{}, 0.01), Error);
+}
+
 TEST(Sketch, BadStrokesAreRefused) {
   auto s = trefoil_stroke(false);
   EXPECT_THROW(knot_from_sketch(std::span(s).first(2)), Error);
