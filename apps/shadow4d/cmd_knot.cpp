@@ -34,8 +34,7 @@ Curve<3> load_knot_curve(const std::string& spec) {
   const Scene scene = load_scene_or_object(spec);
   Curve<3> all;
   for (const SceneObject& obj : scene.objects) {
-    if (!std::holds_alternative<Curve<3>>(obj.shape) && !std::holds_alternative<Curve<4>>(obj.shape))
-      continue;
+    if (is_surface(obj.shape)) continue;
     const std::string where = scene.objects.size() > 1 ? spec + ", object '" + obj.name + "'" : spec;
     for (auto& p : knot_curve_of(obj.shape, where).components) all.components.push_back(std::move(p));
   }

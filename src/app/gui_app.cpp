@@ -76,13 +76,12 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
 void change_crossing_at(GLFWwindow* window, GuiModel& model, const Camera& camera, const Vec2& cursor) {
   int w = 0, h = 0;
   glfwGetWindowSize(window, &w, &h);
-  const Mat4 m = camera.projection() * camera.view();
   const ScreenCrossing* best = nullptr;
   double best_px = 14;  // pixels: about a dot's size
   const ScreenCrossings found = screen_crossings(model.scene, camera);
   for (const ScreenCrossing& c : found.crossings) {
-    const Eigen::Vector4d clip = m * c.over.homogeneous();
-    const Vec2 px((clip.x() / clip.w() + 1) / 2 * w, (1 - clip.y() / clip.w()) / 2 * h);
+    const Vec2 at = camera.ndc(c.over);
+    const Vec2 px((at.x() + 1) / 2 * w, (1 - at.y()) / 2 * h);
     if ((px - cursor).norm() < best_px) {
       best_px = (px - cursor).norm();
       best = &c;

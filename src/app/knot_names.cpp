@@ -37,25 +37,22 @@ std::string identification_line(const SceneObject& obj) {
 }
 }  // namespace
 
-bool KnotNames::nameable(const SceneObject& obj) {
-  return std::holds_alternative<Curve<3>>(obj.shape) || std::holds_alternative<Curve<4>>(obj.shape);
-}
+bool KnotNames::nameable(const SceneObject& obj) { return !is_surface(obj.shape); }
 
-KnotNames::Named& KnotNames::entry(const SceneObject& obj, std::size_t hash) {
+KnotNames::Named& KnotNames::entry(const SceneObject& obj, bool& fresh) {
+  const std::size_t hash = points_hash(obj.shape);
   auto it = std::find_if(named_.begin(), named_.end(),
                          [&](const Named& n) { return n.object == obj.name; });
-  if (it == named_.end()) it = named_.insert(named_.end(), Named{obj.name, hash, false, {}});
-  if (it->points_hash != hash) *it = Named{obj.name, hash, false, {}};
+  fresh = it == named_.end() || it->points_hash != hash;
+  if (it == named_.end()) return named_.emplace_back(Named{obj.name, hash, false, {}});
+  if (fresh) *it = Named{obj.name, hash, false, {}};
   return *it;
 }
 
 const std::string* KnotNames::live(const SceneObject& obj) {
-  const std::size_t hash = points_hash(obj.shape);
-  const bool known = std::any_of(named_.begin(), named_.end(), [&](const Named& n) {
-    return n.object == obj.name && n.points_hash == hash;
-  });
-  Named& e = entry(obj, hash);
-  if (!known) {
+  bool fresh = false;
+  Named& e = entry(obj, fresh);
+  if (fresh) {
     // Named now unless its diagram is large; a bad curve is named now too (its line says why).
     bool small = true;
     try {
@@ -72,7 +69,8 @@ const std::string* KnotNames::live(const SceneObject& obj) {
 }
 
 const std::string& KnotNames::name(const SceneObject& obj) {
-  Named& e = entry(obj, points_hash(obj.shape));
+  bool fresh = false;
+  Named& e = entry(obj, fresh);
   e.line = identification_line(obj);
   e.named = true;
   return e.line;

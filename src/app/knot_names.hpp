@@ -31,7 +31,8 @@ class KnotNames {
     bool named = false;  // false: too large to name live, and not asked yet
     std::string line;
   };
-  Named& entry(const SceneObject& obj, std::size_t hash);
+  // The object's entry, new (fresh) when it had none or its points changed since.
+  Named& entry(const SceneObject& obj, bool& fresh);
   std::vector<Named> named_;
 };
 

@@ -39,6 +39,11 @@ double Camera::view_depth(const Vec3& p) const {
   return (p - eye()).dot(forward);
 }
 
+Vec2 Camera::ndc(const Vec3& p) const {
+  const Eigen::Vector4d clip = projection() * view() * p.homogeneous();
+  return clip.head<2>() / clip.w();
+}
+
 double fit_distance(double radius, double fov_y, double aspect) {
   // The sphere fits when the half-angle it subtends, asin(r/d), is at most the smaller half
   // field of view (horizontal half-angle is atan(aspect · tan(fov_y/2))).

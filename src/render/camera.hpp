@@ -24,6 +24,8 @@ struct Camera {
   Mat4 projection() const;  // eye -> clip coordinates (OpenGL conventions, NDC z in [-1, 1])
   // Distance in front of the eye along the view direction (positive for visible points).
   double view_depth(const Vec3& p) const;
+  // Normalised device coordinates of p on the screen (x right, y up, [-1, 1] across the view).
+  Vec2 ndc(const Vec3& p) const;
 };
 
 // Distance at which a sphere of `radius` exactly fits the narrower of the two fields of view.

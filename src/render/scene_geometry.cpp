@@ -208,6 +208,24 @@ void add_crossings(const Scene& scene, const Camera& camera, double tube, DrawOb
 
 }  // namespace
 
+std::vector<Polyline<3>> drawn_curve(const Shape& shape, const Frame<4>& frame,
+                                     std::vector<std::vector<double>>* w) {
+  if (const auto* c3 = std::get_if<Curve<3>>(&shape)) return c3->components;
+  std::vector<Polyline<3>> drawn;
+  if (const auto* c4 = std::get_if<Curve<4>>(&shape))
+    for (const auto& poly : c4->components) {
+      Polyline<3> p{{}, poly.closed};
+      if (w) w->emplace_back();
+      for (const Vec4& q : poly.points) {
+        const Vec4 v = frame.to_view(q);
+        p.points.push_back(v.head<3>());
+        if (w) w->back().push_back(v[3]);
+      }
+      drawn.push_back(std::move(p));
+    }
+  return drawn;
+}
+
 ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
   // The perspective image of a segment is a segment: under the projective map
   // (x, y, z) -> (x, y, 1) / w, w the distance in front of the eye, the camera's image becomes an
@@ -216,19 +234,8 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
   const Mat4 view = camera.view();
   ScreenCrossings out;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    std::vector<Polyline<3>> drawn;  // the curve where it is drawn (shadow space)
-    if (const auto* c3 = std::get_if<Curve<3>>(&scene.objects[i].shape)) {
-      drawn = c3->components;
-    } else if (const auto* c4 = std::get_if<Curve<4>>(&scene.objects[i].shape)) {
-      for (const auto& poly : c4->components) {
-        Polyline<3> p;
-        p.closed = poly.closed;
-        for (const Vec4& q : poly.points) p.points.push_back(scene.frame.shadow(q));
-        drawn.push_back(std::move(p));
-      }
-    } else {
-      continue;
-    }
+    if (is_surface(scene.objects[i].shape)) continue;
+    const std::vector<Polyline<3>> drawn = drawn_curve(scene.objects[i].shape, scene.frame);
     Curve<3> image, seen;  // the image's runs, and the same runs where they are drawn
     bool visible_all = true;
     for (const Polyline<3>& poly : drawn) {
@@ -295,12 +302,12 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
     out.non_generic += r.non_generic;
     // The point of the drawn segment at image parameter t: perspective-correct, through 1/w.
     // Also the segment's unit direction.
-    auto on_strand = [&](const SegmentRef& s, double t, Vec3& direction, double& u) {
+    auto on_strand = [&](const SegmentRef& s, double t, Vec3& direction) {
       const auto& poly = seen.components[s.component];
       const auto& img = image.components[s.component];
       const std::size_t k = static_cast<std::size_t>(s.segment), next = (k + 1) % poly.points.size();
       const double inv0 = img.points[k].z(), inv1 = img.points[next].z();
-      u = t * inv1 / ((1 - t) * inv0 + t * inv1);
+      const double u = t * inv1 / ((1 - t) * inv0 + t * inv1);
       const Vec3 along = poly.points[next] - poly.points[k];
       if (along.norm() > 0) direction = along.normalized();
       return Vec3(poly.points[k] + u * along);
@@ -309,8 +316,7 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       ScreenCrossing s;
       s.object = static_cast<int>(i);
       Vec3 da = Vec3::UnitX(), db = Vec3::UnitX();
-      double ua = 0, ub = 0;
-      const Vec3 pa = on_strand(c.a, c.ta, da, ua), pb = on_strand(c.b, c.tb, db, ub);
+      const Vec3 pa = on_strand(c.a, c.ta, da), pb = on_strand(c.b, c.tb, db);
       const bool a_over = c.a_over();
       s.over = a_over ? pa : pb;
       s.under = a_over ? pb : pa;
@@ -319,8 +325,6 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
       if (visible_all) {  // the runs are the curve's own components
         s.over_at = a_over ? c.a : c.b;
         s.under_at = a_over ? c.b : c.a;
-        s.over_u = a_over ? ua : ub;
-        s.under_u = a_over ? ub : ua;
       }
       out.crossings.push_back(s);
     }

@@ -58,10 +58,9 @@ struct ScreenCrossing {
   int object = 0;  // index in scene.objects
   Vec3 over, under;
   Vec3 over_direction = Vec3::UnitX(), under_direction = Vec3::UnitX();
-  // Where each strand is on the curve (component, segment, and the parameter along the segment)
-  // when the whole curve is in front of the eye; component -1 otherwise.
+  // Where each strand is on the curve (component and segment) when the whole curve is in front
+  // of the eye; component -1 otherwise.
   SegmentRef over_at{-1, -1}, under_at{-1, -1};
-  double over_u = 0, under_u = 0;
 };
 
 // A curve object's image on the screen as an orthographic shadow: (x, y) on the screen, depth 1/w
@@ -81,6 +80,11 @@ struct ScreenCrossings {
   int behind_eye = 0;       // curve points closer to the eye than the near plane, or behind it:
                             // the curve is cut there, and only what the camera sees is counted
 };
+
+// A curve object's components where they are drawn (shadow space): a curve of R^3 as it is, one
+// of R^4 through the frame, with each point's w of the view in `w` when given. Empty for surfaces.
+std::vector<Polyline<3>> drawn_curve(const Shape& shape, const Frame<4>& frame,
+                                     std::vector<std::vector<double>>* w = nullptr);
 
 // The crossings of the image of every curve object as `camera` sees it (curves in R^4 by their
 // shadow through scene.frame): the knot diagram of the view, perspective included.

@@ -17,26 +17,11 @@ struct Drawn {
   bool four = false;
 };
 
-Drawn drawn_curve(const Scene& scene, const SceneObject& obj) {
+Drawn drawn_of(const Scene& scene, const SceneObject& obj) {
+  if (is_surface(obj.shape)) throw Error("'" + obj.name + "' is a surface: only curves have crossings to change");
   Drawn d;
-  if (const auto* c3 = std::get_if<Curve<3>>(&obj.shape)) {
-    d.components = c3->components;  // objects of R^3 are drawn as they are
-  } else if (const auto* c4 = std::get_if<Curve<4>>(&obj.shape)) {
-    d.four = true;
-    for (const auto& p : c4->components) {
-      Polyline<3> q{{}, p.closed};
-      std::vector<double> w;
-      for (const Vec4& x : p.points) {
-        const Vec4 v = scene.frame.to_view(x);
-        q.points.push_back(v.head<3>());
-        w.push_back(v[3]);
-      }
-      d.components.push_back(std::move(q));
-      d.w.push_back(std::move(w));
-    }
-  } else {
-    throw Error("'" + obj.name + "' is a surface: only curves have crossings to change");
-  }
+  d.four = std::holds_alternative<Curve<4>>(obj.shape);
+  d.components = drawn_curve(obj.shape, scene.frame, &d.w);
   return d;
 }
 
@@ -64,13 +49,9 @@ struct Seen {
   SegmentRef over;
 };
 std::vector<Seen> seen_crossings(const Scene& scene, const Camera& camera, int object) {
-  const Mat4 m = camera.projection() * camera.view();
   std::vector<Seen> out;
-  for (const ScreenCrossing& c : screen_crossings(scene, camera).crossings) {
-    if (c.object != object) continue;
-    const Eigen::Vector4d clip = m * c.over.homogeneous();
-    out.push_back({clip.head<2>() / clip.w(), c.over_at});
-  }
+  for (const ScreenCrossing& c : screen_crossings(scene, camera).crossings)
+    if (c.object == object) out.push_back({camera.ndc(c.over), c.over_at});
   return out;
 }
 
@@ -83,10 +64,9 @@ Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const Sc
   const SceneObject& obj = scene.objects[c.object];
   if (c.under_at.component < 0)
     throw Error("part of '" + obj.name + "' is behind the eye: step back to change its crossings");
-  const Drawn drawn = drawn_curve(scene, obj);
+  const Drawn drawn = drawn_of(scene, obj);
   const std::vector<Seen> before = seen_crossings(scene, camera, c.object);
-  const Eigen::Vector4d clip = camera.projection() * camera.view() * c.over.homogeneous();
-  const Vec2 target = clip.head<2>() / clip.w();
+  const Vec2 target = camera.ndc(c.over);
   const Vec3 eye = camera.eye();
   const Vec3 toward = (eye - c.under).normalized();
   const double needed = (c.over - c.under).dot(toward) + clearance;
