@@ -65,77 +65,88 @@ Curve<3> flip_crossing(const Curve<3>& curve, const Frame<3>& frame, int label) 
   return out;
 }
 
+bool project_depth(std::vector<DepthChain>& chains, std::span<const DepthConstraint> constraints,
+                   int sweeps, double tolerance) {
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    bool ok = true;
+    for (const DepthConstraint& k : constraints) {
+      const double deficit = k.floor + k.gap - k.value(chains);
+      if (deficit <= tolerance) continue;
+      ok = false;
+      // Move every term by its weight, scaled so that the gap closes exactly when applied
+      // (minimum-norm correction of a linear constraint).
+      double norm2 = 0;
+      for (int t = 0; t < k.count; ++t) norm2 += k.terms[t].weight * k.terms[t].weight;
+      if (!(norm2 > 0)) continue;
+      const double lambda = deficit / norm2;
+      for (int t = 0; t < k.count; ++t) chains[k.terms[t].chain].z[k.terms[t].index] += lambda * k.terms[t].weight;
+    }
+    if (ok) return true;
+  }
+  return false;
+}
+
+int smooth_depth_values(std::vector<DepthChain>& chains, std::span<const DepthConstraint> constraints,
+                        int iterations, double rate, int sweeps) {
+  std::vector<double> next;
+  for (int it = 0; it < iterations; ++it) {
+    for (DepthChain& c : chains) {  // Laplacian step: pull each depth towards its neighbours' mean
+      std::vector<double>& z = c.z;
+      const std::size_t n = z.size();
+      if (n < 2) continue;
+      next.resize(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        // An open chain's end has one neighbour: mirrored, so the end follows it (free ends).
+        const double before = k > 0 ? z[k - 1] : c.closed ? z[n - 1] : z[1];
+        const double after = k + 1 < n ? z[k + 1] : c.closed ? z[0] : z[n - 2];
+        next[k] = (1 - rate) * z[k] + rate * 0.5 * (before + after);
+      }
+      z.swap(next);
+    }
+    // Projection onto the constraints (a few sweeps: they share vertices).
+    project_depth(chains, constraints, sweeps);
+  }
+  for (std::size_t i = 0; i < constraints.size(); ++i)
+    if (!(constraints[i].value(chains) > constraints[i].floor)) return static_cast<int>(i);
+  return -1;
+}
+
 Curve<3> smooth_depth(const Curve<3>& curve, const Frame<3>& frame, const DepthSmoothing& s) {
   Frame<3> used;
   const KnotDiagram d = diagram_from_curve(curve, frame, {}, &used);
   const Vec3 axis = used.axis(2);
   const double clearance = s.clearance * curve_scale(curve);
 
-  // Depth of every vertex, per component; crossings as (over seg, t, under seg, t).
-  std::vector<std::vector<double>> depth;
+  std::vector<DepthChain> depth;
   for (const auto& pl : curve.components) {
-    std::vector<double> z;
-    for (const auto& p : pl.points) z.push_back(axis.dot(p));
+    DepthChain z;
+    for (const auto& p : pl.points) z.z.push_back(axis.dot(p));
     depth.push_back(std::move(z));
   }
-  struct Constraint {
-    int co, so, cu, su;
-    double to, tu;
-  };
-  std::vector<Constraint> cons;
+  // At every crossing the over strand's point (on its segment) stays `clearance` above the under
+  // strand's.
+  std::vector<DepthConstraint> cons;
   for (const auto& c : d.crossings) {
     const Passage& o = d.passages[c.over];
     const Passage& u = d.passages[c.under];
     const int so = static_cast<int>(o.position), su = static_cast<int>(u.position);
-    cons.push_back({o.component, so, u.component, su, o.position - so, u.position - su});
+    const double to = o.position - so, tu = u.position - su;
+    const int no = static_cast<int>(depth[o.component].z.size()), nu = static_cast<int>(depth[u.component].z.size());
+    DepthConstraint k;
+    k.terms = {DepthTerm{o.component, so, 1 - to}, DepthTerm{o.component, (so + 1) % no, to},
+               DepthTerm{u.component, su, -(1 - tu)}, DepthTerm{u.component, (su + 1) % nu, -tu}};
+    k.count = 4;
+    k.gap = clearance;
+    cons.push_back(k);
   }
-  auto at = [&](int comp, int seg, double t) {
-    const auto& z = depth[comp];
-    return (1 - t) * z[seg] + t * z[(seg + 1) % z.size()];
-  };
-  std::vector<double> next;
-  for (int it = 0; it < s.iterations; ++it) {
-    for (auto& z : depth) {  // Laplacian step: pull each depth towards its neighbours' mean
-      const std::size_t n = z.size();
-      next.resize(n);
-      for (std::size_t k = 0; k < n; ++k)
-        next[k] = (1 - s.rate) * z[k] + s.rate * 0.5 * (z[(k + n - 1) % n] + z[(k + 1) % n]);
-      z.swap(next);
-    }
-    // Projection onto the crossing constraints (a few sweeps: they share vertices).
-    for (int sweep = 0; sweep < 8; ++sweep) {
-      bool ok = true;
-      for (const auto& k : cons) {
-        const double zo = at(k.co, k.so, k.to);
-        const double zu = at(k.cu, k.su, k.tu);
-        const double deficit = clearance - (zo - zu);
-        if (deficit <= 0) continue;
-        ok = false;
-        // Raise the over segment's ends and lower the under one's, by weights that close the gap
-        // exactly when applied (minimum-norm correction of a linear constraint).
-        const double wo0 = 1 - k.to, wo1 = k.to, wu0 = 1 - k.tu, wu1 = k.tu;
-        const double norm2 = wo0 * wo0 + wo1 * wo1 + wu0 * wu0 + wu1 * wu1;
-        const double lambda = deficit / norm2;
-        auto& zo_v = depth[k.co];
-        auto& zu_v = depth[k.cu];
-        zo_v[k.so] += lambda * wo0;
-        zo_v[(k.so + 1) % zo_v.size()] += lambda * wo1;
-        zu_v[k.su] -= lambda * wu0;
-        zu_v[(k.su + 1) % zu_v.size()] -= lambda * wu1;
-      }
-      if (ok) break;
-    }
-  }
-  // Every crossing must keep its over/under order whatever happened above (a final guard).
-  for (const auto& k : cons) {
-    if (at(k.co, k.so, k.to) <= at(k.cu, k.su, k.tu))
-      throw Error("depth smoothing could not keep a crossing's order (too many crossings on one segment)");
-  }
+  // Every crossing must keep its over/under order whatever happened (a final guard).
+  if (smooth_depth_values(depth, cons, s.iterations, s.rate) >= 0)
+    throw Error("depth smoothing could not keep a crossing's order (too many crossings on one segment)");
   Curve<3> out = curve;
   for (std::size_t c = 0; c < out.components.size(); ++c)
     for (std::size_t k = 0; k < out.components[c].points.size(); ++k) {
       Vec3& p = out.components[c].points[k];
-      p += (depth[c][k] - axis.dot(p)) * axis;
+      p += (depth[c].z[k] - axis.dot(p)) * axis;
     }
   return out;
 }

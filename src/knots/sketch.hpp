@@ -7,15 +7,13 @@
 #include <vector>
 
 #include "knots/dynadraw.hpp"
+#include "knots/stroke.hpp"
 #include "shape/curve.hpp"
 
 namespace s4d {
 
-struct SketchSample {
-  Vec2 at = Vec2::Zero();  // the cursor, in the sketch plane
-  double time = 0;         // seconds since the stroke began (never decreasing)
-  bool under = false;      // the modifier held: this part of the stroke passes under
-};
+// A cursor sample in the sketch plane; `under`: the modifier held, this part passes under.
+using SketchSample = StrokeSample<2>;
 
 struct SketchOptions {
   DynadrawParams pen;
