@@ -333,7 +333,7 @@ TEST(SurfaceExplorer, CliffordTorusProbeKeepsItsSheetThroughTheShadow) {
   // curve near it: a short straight drag across it passes this curve once and no other.
   const double d = 0.04;
   int pick = -1;
-  Vec3 mid, across;
+  Vec3 mid = Vec3::Zero(), across = Vec3::Zero();
   for (std::size_t i = 0; i < in.segments.size() && pick < 0; ++i) {
     const ShadowSegment& g = in.segments[i];
     if (g.true_intersection || g.length() < 0.02) continue;
