@@ -15,8 +15,7 @@ bool has_display() {
   return (x && *x) || (w && *w);
 }
 
-int launch_gui(const std::string& open_spec, int frames, const std::string& window_shot,
-               const std::string& device) {
+int launch_gui(const GuiLaunch& launch) {
   if (!has_display()) {
     std::cerr << "shadow4d: no display (DISPLAY/WAYLAND_DISPLAY unset). Headless commands work:\n"
                  "  shadow4d demo            render the paper's objects to PNG\n"
@@ -26,10 +25,13 @@ int launch_gui(const std::string& open_spec, int frames, const std::string& wind
   }
 #ifdef S4D_HAVE_GUI
   GuiOptions options;
-  options.open_spec = open_spec;
-  options.frames = frames;
-  options.window_shot = window_shot;
-  options.device = device;
+  options.open_spec = launch.open_spec;
+  options.frames = launch.frames;
+  options.window_shot = launch.window_shot;
+  options.device = launch.device;
+  options.input = launch.input;
+  options.width = launch.width;
+  options.height = launch.height;
   return run_gui_app(options);
 #else
   std::cerr << "shadow4d: this build has no GUI (configure with -DS4D_BUILD_GUI=ON)\n";

@@ -4,11 +4,17 @@
 
 namespace s4d::cli {
 
+// What the window opens with (see app/gui_app.hpp's GuiOptions).
+struct GuiLaunch {
+  std::string open_spec;
+  int frames = 0;
+  std::string window_shot;
+  std::string device = "mouse";
+  std::string input;
+  int width = 1280, height = 800;
+};
 // Returns the process exit code.
-// `frames` > 0 quits after that many frames, saving the window to `window_shot` if set.
-// `device` (mouse|sim|replay:FILE|spacenav|openhaptics) starts the haptic loop with that device.
-int launch_gui(const std::string& open_spec, int frames = 0, const std::string& window_shot = {},
-               const std::string& device = {});
+int launch_gui(const GuiLaunch& launch);
 // True when DISPLAY or WAYLAND_DISPLAY is set.
 bool has_display();
 

@@ -12,19 +12,21 @@ int main(int argc, char** argv) {
   CLI::App app{"shadow4d - touch and edit higher-dimensional objects through their shadows.\n"
                "With no sub-command, opens the app window (on a display)."};
   app.require_subcommand(0, 1);
-  std::string open_spec;
-  app.add_option("file", open_spec,
-                 "scene (.json), mesh (.off/.4off), curve (.vect/.txt) or generator call to open");
-  int frames = 0;
-  std::string window_shot;
-  app.add_option("--frames", frames, "GUI: quit after this many frames (for scripted screenshots)")
+  s4d::cli::GuiLaunch gui;
+  app.add_option("file", gui.open_spec,
+                 "scene or scenario (.json), mesh (.off/.4off), curve (.vect/.txt) or generator call to open");
+  app.add_option("--frames", gui.frames, "GUI: quit after this many frames (for scripted screenshots)")
       ->group("GUI scripting")->check(CLI::NonNegativeNumber);
-  app.add_option("--window-shot", window_shot, "GUI: save the window, panels included, at the last frame")
+  app.add_option("--window-shot", gui.window_shot, "GUI: save the window, panels included, at the last frame")
       ->group("GUI scripting");
-  std::string device;
+  app.add_option("--input", gui.input,
+                 "GUI: play timed mouse and key events from this file (lines 'FRAME EVENT ARGS': move X Y, "
+                 "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, open SPEC, "
+                 "shot FILE, dump FILE, quit)")
+      ->group("GUI scripting");
   app.add_option(
-      "--device", device,
-      "GUI: start the haptic loop with this device: mouse, sim, replay:FILE, spacenav, openhaptics");
+      "--device", gui.device,
+      "GUI: the haptic loop's device: mouse (default), sim, replay:FILE, spacenav, openhaptics");
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "log more");
   s4d::cli::add_registered_commands(app);
@@ -32,7 +34,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
-    if (app.get_subcommands().empty()) return s4d::cli::launch_gui(open_spec, frames, window_shot, device);
+    if (app.get_subcommands().empty()) return s4d::cli::launch_gui(gui);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const s4d::cli::ExitStatus& e) {

@@ -1,4 +1,8 @@
-// The window loop: events -> mouse mapping -> panels -> scene drawing -> ImGui -> swap.
+// The window loop: input (GLFW or the input file) -> session refresh -> the active tool or the
+// view -> panels -> scene drawing and tool overlays -> ImGui -> swap.
+//
+// [SECTION] view rays and overlays   [SECTION] knot sketch and crossings   [SECTION] input routing
+// [SECTION] scripted commands   [SECTION] the loop
 #include "app/gui_app.hpp"
 
 #include <GLFW/glfw3.h>
@@ -7,11 +11,15 @@
 #include <imgui_impl_opengl3.h>
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "app/haptics_window.hpp"
 #include "app/panels.hpp"
 #include "app/sketch_tool.hpp"
+#include "app/window_input.hpp"
+#include "interact/live_simulation.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
 #include "render/view_edit.hpp"
@@ -22,25 +30,69 @@ namespace {
 
 void glfw_error(int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); }
 
-// While sketching, the left button draws (shift: the stroke passes under); on release the
-// stroke becomes a knot added to the scene.
-void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const Camera& camera,
-                   const Vec2& cursor, bool captured) {
-  if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE) && !ImGui::GetIO().WantTextInput) {
-    model.sketching = false;
-    model.status = "";
+Vec2 window_size(GLFWwindow* window) {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window, &w, &h);
+  return Vec2(std::max(w, 1), std::max(h, 1));
+}
+
+// [SECTION] view rays and overlays
+ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window, const Frame<4>& frame) {
+  ToolView v;
+  const Eigen::Quaterniond q = camera.orientation.normalized();
+  v.eye = camera.eye();
+  v.right = q * Vec3::UnitX();
+  v.up = q * Vec3::UnitY();
+  v.toward_eye = q * Vec3::UnitZ();
+  v.centre = camera.target;
+  const double t = std::tan(camera.fov_y / 2);
+  const Vec3 d_eye(camera.aspect * t * (2 * cursor.x() / window.x() - 1), t * (1 - 2 * cursor.y() / window.y()), -1);
+  v.ray = (q * d_eye).normalized();
+  v.pixel_size = 2 * camera.distance * t / window.y();
+  v.cursor = cursor;
+  v.window = window;
+  v.frame = frame;
+  return v;
+}
+
+bool to_screen(const Camera& camera, const Vec3& p, const Vec2& window, ImVec2& out) {
+  if (!p.allFinite() || camera.view_depth(p) <= camera.near_plane) return false;
+  const Vec2 n = camera.ndc(p);
+  out = ImVec2(static_cast<float>((n.x() + 1) / 2 * window.x()), static_cast<float>((1 - n.y()) / 2 * window.y()));
+  return true;
+}
+
+void draw_overlay(const Overlay& o, const Camera& camera, const Vec2& window) {
+  ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  for (const auto& l : o.lines) {
+    ImVec2 a, b;
+    if (to_screen(camera, l.a, window, a) && to_screen(camera, l.b, window, b)) dl->AddLine(a, b, l.rgba, l.width);
   }
-  if (!model.sketching) {
+  for (const auto& d : o.dots) {
+    ImVec2 a;
+    if (!to_screen(camera, d.at, window, a)) continue;
+    if (d.filled) dl->AddCircleFilled(a, d.radius, d.rgba, 16);
+    else dl->AddCircle(a, d.radius, d.rgba, 24, 2.0f);
+  }
+  for (const auto& l : o.screen_lines)
+    dl->AddLine(ImVec2(static_cast<float>(l.a.x()), static_cast<float>(l.a.y())),
+                ImVec2(static_cast<float>(l.b.x()), static_cast<float>(l.b.y())), l.rgba, l.width);
+}
+
+// [SECTION] knot sketch and crossings
+// While sketching, the left button draws (shift: the stroke passes under); on release the stroke
+// becomes a knot added to the scene.
+void handle_sketch(GuiModel& model, SketchTool& tool, const Camera& camera, const WindowInput& input,
+                   const Vec2& window, bool captured, double now) {
+  if (!model.sketching()) {
     tool.cancel();
     return;
   }
-  int w = 0, h = 0;
-  glfwGetWindowSize(window, &w, &h);
-  const Vec2 size(w, h);
-  const bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  const bool under = ImGui::GetIO().KeyShift;
-  if (pressed && !tool.drawing() && !captured) tool.begin(camera, cursor, size, glfwGetTime(), under);
-  else if (pressed && tool.drawing()) tool.add(cursor, size, glfwGetTime(), under);
+  const Vec2 cursor = input.cursor();
+  const bool pressed = input.down(0);
+  const bool under = input.shift();
+  if (pressed && !tool.drawing() && !captured) tool.begin(camera, cursor, window, now, under);
+  else if (pressed && tool.drawing()) tool.add(cursor, window, now, under);
   else if (!pressed && tool.drawing() && tool.screen().size() < 3) {
     tool.cancel();
     model.status = std::string("a click is not a stroke; ") + kSketchHelp;
@@ -57,9 +109,9 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
     model.last_stroke = stroke_as_curve(tool.last_stroke());
     if (made) {
       obj.name = "sketch-" + std::to_string(++model.created);
-      model.scene.objects.push_back(std::move(obj));
-      model.scene.view.intersections = true;  // its crossings and Gauss code
-      model.status = std::string("sketched ") + model.scene.objects.back().name + "; " + kSketchHelp;
+      model.scene().objects.push_back(std::move(obj));
+      model.scene().view.intersections = true;  // its crossings and Gauss code
+      model.status = std::string("sketched ") + model.scene().objects.back().name + "; " + kSketchHelp;
     }
   }
   // The stroke so far: white where it passes over, blue where under.
@@ -72,63 +124,90 @@ void handle_sketch(GLFWwindow* window, GuiModel& model, SketchTool& tool, const 
 }
 
 // A right click on a crossing's dot changes that crossing of the curve, as seen (the paper's
-// "what does changing this crossing give?").
-void change_crossing_at(GLFWwindow* window, GuiModel& model, const Camera& camera, const Vec2& cursor) {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window, &w, &h);
+// "what does changing this crossing give?"). False when no dot is under the cursor.
+bool change_crossing_at(GuiModel& model, const Camera& camera, const Vec2& cursor, const Vec2& window) {
   const ScreenCrossing* best = nullptr;
   double best_px = 14;  // pixels: about a dot's size
-  const ScreenCrossings found = screen_crossings(model.scene, camera);
+  const ScreenCrossings found = screen_crossings(model.scene(), camera);
   for (const ScreenCrossing& c : found.crossings) {
     const Vec2 at = camera.ndc(c.over);
-    const Vec2 px((at.x() + 1) / 2 * w, (1 - at.y()) / 2 * h);
+    const Vec2 px((at.x() + 1) / 2 * window.x(), (1 - at.y()) / 2 * window.y());
     if ((px - cursor).norm() < best_px) {
       best_px = (px - cursor).norm();
       best = &c;
     }
   }
-  if (!best) return;
+  if (!best) return false;
   try {
-    SceneObject& obj = model.scene.objects[best->object];
-    obj.shape = change_crossing_in_view(model.scene, camera, *best, 2.5 * model.scene.view.tube_radius);
+    SceneObject& obj = model.scene().objects[best->object];
+    obj.shape = change_crossing_in_view(model.scene(), camera, *best, 2.5 * model.scene().view.tube_radius);
     obj.generator.reset();  // edited geometry: saved as a file beside the scene
     obj.source_path.clear();
     model.status = "changed a crossing of '" + obj.name + "'";
   } catch (const std::exception& e) {
     model.error = e.what();
   }
+  return true;
 }
 
-// Mouse drags that ImGui does not want go to the view: plain = trackball, shift = xw/yw,
-// ctrl = zw; the wheel zooms. While sketching, the left button draws instead.
-void handle_mouse(GLFWwindow* window, GuiModel& model, SketchTool& sketch, const Camera& camera,
-                  double& last_x, double& last_y) {
-  double x = 0, y = 0;
-  glfwGetCursorPos(window, &x, &y);
-  const double dx = x - last_x, dy = y - last_y;
-  last_x = x;
-  last_y = y;
+// [SECTION] input routing
+struct Routing {
+  bool tool_drag = false;  // the left button belongs to the tool until it is released
+  bool view_drag = false;  // ... or to the view
+};
+
+void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, const Vec2& window,
+                 const Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
-  handle_sketch(window, model, sketch, camera, Vec2(x, y), io.WantCaptureMouse);
-  if (io.WantCaptureMouse) return;
-  if (io.MouseWheel != 0) model.view.scroll(io.MouseWheel);
-  if (!model.sketching && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) change_crossing_at(window, model, camera, Vec2(x, y));
-  if (model.sketching || glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) return;
-  int w = 0, h = 0;
-  glfwGetWindowSize(window, &w, &h);
-  const DragMode mode = io.KeyShift  ? DragMode::kRotateW
-                        : io.KeyCtrl ? DragMode::kRotateZW
-                                     : DragMode::kTrackball;
-  model.view.drag(mode, dx, dy, h);
+  Tool& tool = model.grab;
+  const bool touch = model.tool == ToolChoice::kTouch;
+  if (!io.WantTextInput) {
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE) || in.key_pressed(GLFW_KEY_ESCAPE)) {
+      if (model.sketching()) model.status = "";
+      model.tool = ToolChoice::kTouch;
+    }
+    if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
+    if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
+    if (in.key_pressed(GLFW_KEY_SPACE) && model.session.snapshot()) {
+      const bool playing = model.session.snapshot()->status.playing;
+      model.session.send(live_command(playing ? LiveCode::kPause : LiveCode::kPlay));
+      model.status = playing ? "paused (Space plays)" : "playing (Space pauses)";
+    }
+    if (touch && in.key_pressed(GLFW_KEY_TAB)) tool.key(ToolKey::kTab, ti, model.session);
+    if (touch && in.key_pressed(GLFW_KEY_P)) tool.key(ToolKey::kPin, ti, model.session);
+  }
+  const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
+  if (in.released(0) || !in.down(0)) {
+    if (r.tool_drag) tool.release(ti, model.session);
+    r.tool_drag = r.view_drag = false;
+  }
+  if (captured) return;
+  if (in.wheel() != 0 && !(touch && tool.wheel(in.wheel(), ti, model.session))) model.view.scroll(in.wheel());
+  if (in.pressed(1) && !model.sketching()) {
+    if (!change_crossing_at(model, camera, in.cursor(), window) && touch) tool.right_click(ti, model.session);
+  }
+  if (model.sketching()) return;  // the left button draws (handle_sketch)
+  if (in.pressed(0)) {
+    // Shift and Ctrl turn the view (in 4D); a plain or Alt press on a surface takes hold.
+    const bool navigate = in.shift() || in.ctrl();
+    r.tool_drag = touch && !navigate && tool.press(ti, model.session);
+    r.view_drag = !r.tool_drag;
+  } else if (in.down(0) && r.tool_drag) {
+    tool.drag(ti, model.session);
+  } else if (in.down(0) && r.view_drag) {
+    const Vec2 d = in.cursor_delta();
+    const DragMode mode = in.shift() ? DragMode::kRotateW : in.ctrl() ? DragMode::kRotateZW : DragMode::kTrackball;
+    model.view.drag(mode, d.x(), d.y(), window.y());
+  } else if (!in.down(0) && touch) {
+    tool.hover(ti, model.session);
+  }
+  if (touch) {
+    const std::string m = tool.take_message();
+    if (!m.empty()) model.status = m;
+  }
 }
 
-void handle_keys(GuiModel& model) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Q)) model.quit = true;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12)) model.want_screenshot = true;
-}
-
+// [SECTION] scripted commands
 void save_shot(const Image& image, const std::string& path, GuiModel& model) {
   try {
     write_png(image, path);
@@ -138,9 +217,96 @@ void save_shot(const Image& image, const std::string& path, GuiModel& model) {
   }
 }
 
+// The state a scripted test reads back: the simulation's status, the monitor's checks and every
+// vertex where it is now (world coordinates).
+void dump_state(GuiModel& model, const std::string& path) {
+  using Json = nlohmann::ordered_json;
+  Json j;
+  Session& s = model.session;
+  j["simulating"] = s.simulating();
+  j["physics_error"] = s.physics_error();
+  j["status"] = model.status;
+  j["error"] = model.error;
+  if (const HapticSnapshot* snap = s.snapshot()) {
+    const SceneStatus& st = snap->status;
+    j["sim_time"] = st.sim_time;
+    j["sim_steps"] = st.sim_steps;
+    j["playing"] = st.playing;
+    j["held_vertex"] = st.held_vertex;
+    j["grab_mode"] = st.grab_mode;
+    j["pinned"] = st.pinned;
+    j["contacts"] = st.contacts;
+    j["rollbacks"] = st.rollbacks;
+    j["device"] = snap->device_name;
+    j["max_force_output"] = snap->max_force_output;
+    j["safety_nonfinite"] = snap->safety.nonfinite;
+    j["loop_period_p999_us"] = snap->period.p999_us;
+    j["dim"] = snap->point_dimension;
+    j["positions"] = snap->points;
+  }
+  const MonitorResult c = s.checks();
+  j["checked"] = c.valid;
+  j["true_intersections"] = c.true_intersections;
+  j["min_gap"] = std::isfinite(c.min_gap) ? Json(c.min_gap) : Json(nullptr);
+  if (c.verdict) j["verdict"] = {{"pass", c.verdict->pass}, {"detail", c.verdict->detail}};
+  const Frame<4>& f = model.scene().frame;
+  Json frame = Json::array();
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
+  j["frame"] = frame;
+  j["hits_under_cursor"] = model.grab.hits().size();
+  j["sheet"] = model.grab.sheet();
+  std::ofstream out(path);
+  out << j.dump(1) << "\n";
+  if (!out) model.error = "cannot write " + path;
+}
+
+// Keeps the simulation's view of the hand in step with the picture: the 4D frame, and the device
+// workspace laid onto the view's ball (not while a vertex is held: the hand must not jump).
+void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, DeviceMapping& sent_mapping) {
+  Session& s = model.session;
+  if (!s.simulating() || !s.snapshot()) return;
+  const Frame<4>& f = model.scene().frame;
+  if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12) {
+    s.send(live_frame(f));
+    sent_frame = f;
+  }
+  const DeviceCapabilities& caps = s.snapshot()->caps;
+  const Mat<3> axes = camera.orientation.normalized().toRotationMatrix();
+  const DeviceMapping m = DeviceMapping::fit(model.scene().view.fit_centre, model.scene().view.fit_radius, axes,
+                                             caps.workspace_centre(), 0.5 * (caps.workspace_max - caps.workspace_min));
+  const bool changed = (m.centre - sent_mapping.centre).norm() + (m.axes - sent_mapping.axes).norm() +
+                           std::abs(m.metres_per_unit - sent_mapping.metres_per_unit) >
+                       1e-9;
+  if (changed && !s.held()) {
+    s.set_mapping(m);
+    sent_mapping = m;
+  }
+}
+
+// The view's ball in the shadow: a ball of R^4 is seen through the frame (its shadow is a ball
+// of the same radius); objects of R^3 are drawn as they are.
+void frame_the_fit(GuiModel& model) {
+  Scene& scene = model.scene();
+  bool in_r4 = false;
+  for (const SceneObject& o : scene.objects) in_r4 = in_r4 || ambient_dim(o.shape) == 4;
+  scene.view.fit_centre = in_r4 ? Vec3(scene.frame.shadow(model.fit.centre)) : Vec3(model.fit.centre.head<3>());
+  scene.view.fit_radius = model.fit.radius;
+}
+
 }  // namespace
 
+// [SECTION] the loop
 int run_gui_app(const GuiOptions& options) {
+  std::vector<InputEvent> script;
+  if (!options.input.empty()) {
+    try {
+      script = read_input_file(options.input);
+    } catch (const std::exception& e) {
+      std::cerr << "shadow4d: " << e.what() << "\n";
+      return 1;
+    }
+  }
   glfwSetErrorCallback(glfw_error);
   if (!glfwInit()) {
     std::cerr << "shadow4d: cannot open a window (glfwInit failed); try `shadow4d demo`\n";
@@ -164,65 +330,111 @@ int run_gui_app(const GuiOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplGlfw_InitForOpenGL(window, false);  // WindowInput installs the callbacks
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   int exit_code = 0;
   {
+    WindowInput input;
+    input.attach(window);
+    input.set_script(std::move(script));
     Renderer renderer;
     Panels panels;
     SketchTool sketch;
     HapticsWindow haptics;
-    if (!options.device.empty()) haptics.start(options.device);
     GuiModel model;
+    model.session_options.device = options.device.empty() ? "mouse" : options.device;
     Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
     if (!model.error.empty() && !options.open_spec.empty()) {
       std::cerr << "shadow4d: " << model.error << "\n";
       exit_code = 1;
     }
-    double last_x = 0, last_y = 0;
-    glfwGetCursorPos(window, &last_x, &last_y);
+    if (model.session_options.device != "mouse") haptics.open() = true;
+    Routing routing;
+    Frame<4> sent_frame;
+    sent_frame.rotate(Plane{0, 1}, 1.0);  // anything but the scene's: the first frame is sent
+    DeviceMapping sent_mapping;
+    sent_mapping.metres_per_unit = -1;
+    std::vector<std::string> shots, dumps;
     for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
       glfwPollEvents();
+      for (const InputEvent& e : input.begin_frame(frame)) {
+        if (e.kind == InputEvent::Kind::open) Panels::open(model, e.text);
+        else if (e.kind == InputEvent::Kind::shot) shots.push_back(e.text);
+        else if (e.kind == InputEvent::Kind::dump) dumps.push_back(e.text);
+        else if (e.kind == InputEvent::Kind::quit) model.quit = true;
+      }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      input.write_to_imgui();
       ImGui::NewFrame();
-      handle_mouse(window, model, sketch, renderer.camera(), last_x, last_y);
-      handle_keys(model);
+
+      if (model.document_changed) {
+        model.document_changed = false;
+        model.session.rebuild();
+        model.fit = fit_of(model.scene());
+      }
+      model.session.refresh();
+      model.view.apply_to(model.scene());
+      frame_the_fit(model);
+
+      const Vec2 win = window_size(window);
+      const Camera& camera = renderer.camera();
+      ToolInput ti;
+      ti.view = tool_view(camera, input.cursor(), win, model.scene().frame);
+      ti.shift = input.shift();
+      ti.ctrl = input.ctrl();
+      ti.alt = input.alt();
+      ti.time = glfwGetTime();
+      sync_view(model, camera, sent_frame, sent_mapping);
+      handle_sketch(model, sketch, camera, input, win, ImGui::GetIO().WantCaptureMouse, ti.time);
+      route_input(model, routing, input, ti, win, camera);
       panels.draw(model, ImGui::GetIO().Framerate);
       if (model.open_haptics) {
         model.open_haptics = false;
-        if (!haptics.running()) haptics.start("mouse");
         haptics.open() = true;
       }
-      haptics.draw();
+      haptics.draw(model.session);
+      if (model.tool == ToolChoice::kTouch) {
+        Overlay overlay;
+        model.grab.overlay(overlay, model.session);
+        draw_overlay(overlay, camera, win);
+      }
       ImGui::Render();
 
       int fw = 0, fh = 0;
       glfwGetFramebufferSize(window, &fw, &fh);
-      model.view.apply_to(model.scene);
       if (fw > 0 && fh > 0) {
-        renderer.draw(model.scene, fw, fh);
-        model.intersections = renderer.intersections();
+        try {
+          renderer.draw(model.scene(), fw, fh);
+          model.intersections = renderer.intersections();
+        } catch (const std::exception& e) {
+          model.error = e.what();
+        }
         if (model.want_screenshot) {  // the picture without the panels
           model.want_screenshot = false;
           save_shot(renderer.read_pixels(fw, fh), model.screenshot_path, model);
         }
       }
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      const bool last = options.frames > 0 && frame >= options.frames;
-      if (last && !options.window_shot.empty()) {
+      const bool last = (options.frames > 0 && frame >= options.frames) || model.quit;
+      if (last && !options.window_shot.empty()) shots.push_back(options.window_shot);
+      for (const std::string& path : shots) {
         try {
-          write_png(renderer.read_pixels(fw, fh), options.window_shot);
-          std::cout << options.window_shot << "\n";
+          write_png(renderer.read_pixels(fw, fh), path);
+          std::cout << path << "\n";
         } catch (const std::exception& e) {
           std::cerr << "shadow4d: " << e.what() << "\n";
           exit_code = 1;
         }
       }
+      shots.clear();
+      for (const std::string& path : dumps) dump_state(model, path);
+      dumps.clear();
       glfwSwapBuffers(window);
       if (last) break;
     }
+    model.session.close();
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

@@ -1,15 +1,16 @@
-// The shadow4d window: GLFW + OpenGL 3.3 + Dear ImGui around the Renderer.
+// The shadow4d window: GLFW + OpenGL 3.3 + Dear ImGui around the Renderer and the Session.
 #pragma once
 #include <string>
 
 namespace s4d {
 
 struct GuiOptions {
-  std::string open_spec;         // scene, mesh, curve or generator call to open at start
+  std::string open_spec;         // scene, scenario, mesh, curve or generator call to open at start
   int frames = 0;                // > 0: quit after this many frames (smoke tests, scripted shots)
   std::string window_shot;       // when set, the last frame (panels included) is saved here
   int width = 1280, height = 800;
-  std::string device;            // when set, the haptic loop starts with this device (--device)
+  std::string device = "mouse";  // the haptic loop's device (--device)
+  std::string input;             // an input file of timed events (see app/window_input.hpp)
 };
 
 // Returns the process exit code; never throws (errors are shown in the window or printed).

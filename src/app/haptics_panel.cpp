@@ -42,7 +42,6 @@ ForceArrow force_arrow(const HapticSnapshot& snap, double metres_per_newton) {
 
 void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSnapshot& snap) {
   if (!ui.open) return;
-  ImGui::SetNextWindowSize(ImVec2(380, 520), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Haptics", &ui.open)) {
     ImGui::End();
     return;
@@ -53,14 +52,8 @@ void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSna
   ImGui::Combo("backend", &ui.device_choice, kDevices, static_cast<int>(std::size(kDevices)));
   if (ui.device_choice == 4) ImGui::InputText("file", ui.replay_file.data(), ui.replay_file.size());
   if (ImGui::Button("Switch device")) {
-    try {
-      std::string text = kDevices[ui.device_choice];
-      if (ui.device_choice == 4) text += std::string(":") + ui.replay_file.data();
-      loop.replace_device(make_device(parse_device_spec(text)));
-      ui.error.clear();
-    } catch (const Error& e) {
-      ui.error = e.what();
-    }
+    ui.requested_device = kDevices[ui.device_choice];
+    if (ui.device_choice == 4) ui.requested_device += std::string(":") + ui.replay_file.data();
   }
   if (!ui.error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", ui.error.c_str());
   ImGui::Text("peak %.2f N, continuous %.2f N, stiffness %.2f N/mm", snap.caps.max_force,
@@ -105,7 +98,6 @@ void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSna
     std::snprintf(label, sizeof label, "%s %s##p%d", sp.name, sp.unit, i);
     if (ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &sp.min, &sp.max, "%.3g")) loop.set_param(i, v);
   }
-  if (ImGui::Button("Reset scene")) loop.reset_scene();
   ImGui::End();
 }
 

@@ -15,11 +15,12 @@ struct HapticsPanelState {
   std::string error;                     // last failure (e.g. "no spacenavd"), shown until the next try
   bool open = true;
   float arrow_scale = 0.01f;             // m per N of the drawn force arrow
+  std::string requested_device;          // set by "Switch device": the caller opens it (and says why not)
 };
 
 // Draws the "Haptics" window. `snap` is this frame's loop.snapshot() (one read per frame, shared with
-// the renderer: the snapshot has a single reader). Device switches call loop.replace_device; errors go
-// to ui.error and leave the current device running.
+// the renderer: the snapshot has a single reader). "Switch device" leaves the spec in
+// ui.requested_device for the caller, whose errors go to ui.error (the current device keeps running).
 void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSnapshot& snap);
 
 // The device choices in the panel's order, as --device spells them (replay takes the typed file).

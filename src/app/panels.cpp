@@ -1,12 +1,15 @@
-// [SECTION] Menu bar   [SECTION] View panel   [SECTION] Scene panel   [SECTION] Generator dialog
+// [SECTION] Opening   [SECTION] Menu bar   [SECTION] View panel   [SECTION] Scene panel
+// [SECTION] Simulation panel   [SECTION] Scenario banner   [SECTION] Generator dialog
 // [SECTION] Dialogs (open, save, screenshot, errors)
 #include "app/panels.hpp"
 
 #include <imgui.h>
 
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
+#include "interact/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "shape/describe.hpp"
 
@@ -16,6 +19,7 @@ namespace {
 
 const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff", ".vect",
                                                ".4vect", ".txt", ".xyz", ".curve"};
+constexpr const char* kIntegratorNames[] = {"symplectic-euler", "paper-euler"};
 
 // Horizontal colour bar: far (blue) on the left, near (red) on the right. R^4 objects are coloured
 // by w, R^3 ones by distance from the eye.
@@ -40,32 +44,97 @@ void legend(ColourMap map, const Scene& scene) {
   if (in_r4 && in_r3) ImGui::TextDisabled("objects in R^3: by distance from the eye");
 }
 
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f s", s);
+  return b;
+}
+
 }  // namespace
 
-Panels::Panels()
-    : open_browser_("Open scene, mesh or curve", kOpenExtensions, false),
-      save_browser_("Save scene", {".json"}, true),
-      shot_browser_("Save screenshot", {".png"}, true),
-      stroke_browser_("Save last sketch stroke", {".txt"}, true) {}
+// [SECTION] Opening
+ViewFit fit_of(const Scene& scene) {
+  ViewFit f;
+  std::vector<Vec4> pts;
+  for (const SceneObject& o : scene.objects)
+    std::visit([&](const auto& s) {
+      using T = std::decay_t<decltype(s)>;
+      auto add = [&](const auto& p) {
+        Vec4 q = Vec4::Zero();
+        q.template head<T::kDim>() = p;
+        pts.push_back(q);
+      };
+      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+        for (const auto& p : s.vertices) add(p);
+      } else {
+        for (const auto& c : s.components)
+          for (const auto& p : c.points) add(p);
+      }
+    }, o.shape);
+  if (pts.empty()) return f;
+  Vec4 lo = pts[0], hi = pts[0];
+  for (const Vec4& p : pts) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  f.centre = 0.5 * (lo + hi);
+  for (const Vec4& p : pts) f.radius = std::max(f.radius, (p - f.centre).norm());
+  if (!(f.radius > 0)) f.radius = 1;
+  return f;
+}
 
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
-    Scene scene = load_scene_or_object(spec);
-    model.scene = std::move(scene);
-    model.view.reset(model.scene);
-    const bool scene_file = spec.size() > 5 && spec.ends_with(".json");
-    if (!scene_file && !model.scene.objects.empty() && ambient_dim(model.scene.objects[0].shape) == 4)
-      model.view.turn_to_generic_view();
-    model.status = "opened " + spec;
+    open(model, load_document(spec));
   } catch (const std::exception& e) {
     model.error = e.what();
   }
 }
 
+void Panels::open(GuiModel& model, Document doc) {
+  const std::string spec = doc.spec;
+  const bool scene_file = spec.size() > 5 && spec.ends_with(".json");
+  const bool scenario = doc.scenario.has_value();
+  SessionOptions options = model.session_options;
+  options.start_playing = !scenario;  // a scenario opens paused in its start state
+  model.session.open(std::move(doc), options);
+  model.view.reset(model.scene());
+  if (!scene_file && !model.scene().objects.empty() && ambient_dim(model.scene().objects[0].shape) == 4)
+    model.view.turn_to_generic_view();
+  model.fit = fit_of(model.scene());
+  model.status = "opened " + spec;
+  if (scenario) model.status += ": " + model.session.scenario()->instruction;
+  if (!model.session.physics_error().empty())
+    model.status += " (not simulated: " + model.session.physics_error() + ")";
+  if (!model.session.device_error().empty()) model.error = model.session.device_error();
+}
+
+Scene scene_to_save(GuiModel& model) {
+  Scene s = model.scene();
+  model.view.apply_to(s);
+  s.view.fit_radius = 0;
+  // Simulated objects have moved: their shapes as they are now, not their generator's.
+  for (std::size_t o = 0; o < s.objects.size(); ++o)
+    if (model.session.simulating() && model.session.first_vertex(static_cast<int>(o)) >= 0) {
+      s.objects[o].generator.reset();
+      s.objects[o].source_path.clear();
+      s.objects[o].placement = Placement{};
+    }
+  return s;
+}
+
+Panels::Panels()
+    : open_browser_("Open scene, scenario, mesh or curve", kOpenExtensions, false),
+      save_browser_("Save scene", {".json"}, true),
+      shot_browser_("Save screenshot", {".png"}, true),
+      stroke_browser_("Save last sketch stroke", {".txt"}, true) {}
+
 void Panels::draw(GuiModel& model, float fps) {
   menu_bar(model);
   view_panel(model, fps);
   scene_panel(model);
+  simulation_panel(model);
+  scenario_banner(model);
   generator_dialog(model);
   dialogs(model);
 }
@@ -75,11 +144,14 @@ void Panels::menu_bar(GuiModel& model) {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New (empty scene)")) {
-      model.scene = Scene{};
-      model.view.reset(model.scene);
+      Document d;
+      d.spec = "an empty scene";
+      open(model, std::move(d));
       model.status = "empty scene: Create adds objects, or sketch a knot";
     }
     if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
+    if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(S4D_SCENARIOS_DIR);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
     if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, !model.last_stroke.components.empty()))
@@ -91,9 +163,23 @@ void Panels::menu_bar(GuiModel& model) {
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) model.quit = true;
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Tools")) {
+    if (ImGui::MenuItem("Touch (grab and pull)", nullptr, model.tool == ToolChoice::kTouch)) {
+      model.tool = ToolChoice::kTouch;
+      model.status = model.grab.help();
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("left-drag a surface: a rubber band pulls the vertex under the cursor (Alt: along w);\n"
+                        "Tab: the next sheet under the cursor; P or right click: pin / unpin;\n"
+                        "the wheel while holding: the hand in depth. On empty space the drag turns the view.");
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Create")) {
-    if (ImGui::MenuItem("Sketch a knot", "Esc stops", &model.sketching))
-      model.status = model.sketching ? kSketchHelp : "";
+    bool sketching = model.sketching();
+    if (ImGui::MenuItem("Sketch a knot", "Esc stops", &sketching)) {
+      model.tool = sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch;
+      model.status = sketching ? kSketchHelp : "";
+    }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("draw a closed curve with the left button in the plane facing you;\n"
                         "where it crosses what is drawn it passes over, or under with shift held.\n"
@@ -114,7 +200,7 @@ void Panels::menu_bar(GuiModel& model) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Haptics")) {
-    if (ImGui::MenuItem("Haptics panel and workspace")) model.open_haptics = true;
+    if (ImGui::MenuItem("Haptics panel (device, loop, forces)")) model.open_haptics = true;
     ImGui::EndMenu();
   }
   ImGui::TextDisabled("|  %s", model.status.c_str());
@@ -124,7 +210,7 @@ void Panels::menu_bar(GuiModel& model) {
 // [SECTION] View panel
 void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 510), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 470), ImGuiCond_FirstUseEver);
   ImGui::Begin("View");
   ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
   ImGui::Separator();
@@ -135,18 +221,18 @@ void Panels::view_panel(GuiModel& model, float fps) {
     ImGui::SliderFloat(plane_name(planes[i]).c_str(), &angles[i], -180.0f, 180.0f, "%.0f");
   if (ImGui::Button("Reset 4D rotation")) angles.fill(0.0f);
   ImGui::SameLine();
-  if (ImGui::Button("Reset view")) model.view.reset(model.scene);
-  ImGui::TextDisabled("drag: turn  shift-drag: xw/yw  ctrl-drag: zw  wheel: zoom");
+  if (ImGui::Button("Reset view")) model.view.reset(model.scene());
+  ImGui::TextDisabled("drag empty space: turn  shift-drag: xw/yw  ctrl-drag: zw  wheel: zoom");
 
   ImGui::Separator();
   ImGui::TextUnformatted("Drawing");
-  ViewSettings& v = model.scene.view;
+  ViewSettings& v = model.scene().view;
   ImGui::Checkbox("depth colour", &v.depth_colour);
   if (v.depth_colour) {
     int map = static_cast<int>(v.colour_map);
     ImGui::Combo("colour map", &map, "coolwarm\0rainbow\0grey\0");
     v.colour_map = static_cast<ColourMap>(map);
-    legend(v.colour_map, model.scene);
+    legend(v.colour_map, model.scene());
   }
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();
@@ -169,13 +255,14 @@ void Panels::view_panel(GuiModel& model, float fps) {
 
 // [SECTION] Scene panel
 void Panels::scene_panel(GuiModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(10, 550), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 200), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(10, 510), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 240), ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
-  if (model.scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
+  Scene& scene = model.scene();
+  if (scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
   int remove = -1;
-  for (std::size_t i = 0; i < model.scene.objects.size(); ++i) {
-    const auto& obj = model.scene.objects[i];
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const auto& obj = scene.objects[i];
     ImGui::PushID(static_cast<int>(i));
     if (ImGui::SmallButton("x")) remove = static_cast<int>(i);
     ImGui::SameLine();
@@ -186,7 +273,10 @@ void Panels::scene_panel(GuiModel& model) {
     knot_name(obj);
     ImGui::PopID();
   }
-  if (remove >= 0) model.scene.objects.erase(model.scene.objects.begin() + remove);
+  if (remove >= 0) {
+    scene.objects.erase(scene.objects.begin() + remove);
+    model.document_changed = true;
+  }
   ImGui::End();
 }
 
@@ -201,6 +291,157 @@ void Panels::knot_name(const SceneObject& obj) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("more than %d crossings: naming it may take a while\n"
                       "(also: shadow4d knot identify FILE)", KnotNames::kLiveCrossings);
+}
+
+// [SECTION] Simulation panel
+void Panels::simulation_panel(GuiModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(340, 520), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Simulation");
+  Session& session = model.session;
+  if (!session.simulating()) {
+    if (!session.physics_error().empty()) {
+      ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "not simulated:");
+      ImGui::TextWrapped("%s", session.physics_error().c_str());
+      ImGui::TextDisabled("the scene stays viewable");
+    } else {
+      ImGui::TextWrapped("no surface to simulate (curves are edited with the knot tools)");
+    }
+    ImGui::End();
+    return;
+  }
+  const HapticSnapshot* snap = session.snapshot();
+  const SceneStatus st = snap ? snap->status : SceneStatus{};
+  if (ImGui::Button(st.playing ? "Pause" : "Play")) session.send(live_command(st.playing ? LiveCode::kPause : LiveCode::kPlay));
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) session.send(live_command(LiveCode::kStepOnce));
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) session.send(live_command(LiveCode::kReset));
+  if (session.scenario()) {
+    ImGui::SameLine();
+    if (!st.script_running) {
+      if (ImGui::Button("Play script")) session.send(live_command(LiveCode::kPlayScript));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("from the start, the scenario's scripted hand does it (as shadow4d run does)");
+    } else if (ImGui::Button("Stop script")) {
+      session.send(live_command(LiveCode::kStopScript));
+    }
+  }
+  static float time_scale = 1;
+  if (ImGui::SliderFloat("time scale", &time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
+    session.send(live_time_scale(time_scale));
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Physics (applied live)");
+  PhysicsSettings& p = model.scene().physics;
+  bool changed = false, released = false;
+  auto edited = [&] {
+    changed = changed || ImGui::IsItemEdited();
+    released = released || ImGui::IsItemDeactivatedAfterEdit();
+  };
+  bool gravity_on = p.gravity.norm() > 0;
+  static Vec4 gravity_saved(0, -9.81, 0, 0);
+  if (ImGui::Checkbox("gravity", &gravity_on)) {
+    if (gravity_on) p.gravity = gravity_saved;
+    else {
+      gravity_saved = p.gravity;
+      p.gravity.setZero();
+    }
+    released = true;
+  }
+  if (gravity_on) {
+    float g[4] = {static_cast<float>(p.gravity[0]), static_cast<float>(p.gravity[1]), static_cast<float>(p.gravity[2]),
+                  static_cast<float>(p.gravity[3])};
+    if (ImGui::DragFloat4("g (x y z w)", g, 0.05f, -50.0f, 50.0f, "%.2f")) p.gravity = Vec4(g[0], g[1], g[2], g[3]);
+    edited();
+  }
+  auto slider = [&](const char* label, double& value, double lo, double hi, const char* format, bool log) {
+    float f = static_cast<float>(value);
+    if (ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi), format,
+                           log ? ImGuiSliderFlags_Logarithmic : 0))
+      value = f;
+    edited();
+  };
+  slider("friction", p.friction, 0.0, 2.0, "%.2f", false);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("0 = slippery: the cloth slides off the ribbon");
+  slider("stiffness N/m", p.stiffness, 1.0, 5000.0, "%.0f", true);
+  slider("thickness", p.thickness, 0.001, 0.2, "%.3f", true);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the contact layer δ collision avoidance keeps between sheets in R^4");
+  slider("damping N s/m", p.damping, 0.0, 1.0, "%.3f", false);
+  int integrator = p.integrator == "paper-euler" || p.integrator == "explicit-euler" ? 1 : 0;
+  if (ImGui::Combo("integrator", &integrator, kIntegratorNames, 2)) {
+    p.integrator = kIntegratorNames[integrator];
+    released = true;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (released || (changed && now - last_settings_send_ > std::chrono::milliseconds(150))) {
+    session.send(live_settings(p));
+    last_settings_send_ = now;
+  }
+  if (st.message[0]) ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "%s", st.message);
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Hand");
+  if (snap) {
+    for (int i = 0; i < snap->param_count && i < kLiveParamCount; ++i) {
+      const SceneParam& sp = snap->params[i];
+      double v = sp.value;
+      char label[64];
+      std::snprintf(label, sizeof label, "%s##band%d", sp.name, i);
+      if (ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &sp.min, &sp.max, "%.3g")) session.loop()->set_param(i, v);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", sp.unit);
+    }
+  }
+  ImGui::Text("pins: %d", st.pinned);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("clear pins")) session.send(live_command(LiveCode::kClearPins));
+  if (st.held_vertex >= 0)
+    ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex, st.grab_mode == 1 ? "(along w)" : "", st.band_force);
+
+  ImGui::Separator();
+  const SimulationRates r = session.rates();
+  ImGui::Text("t = %s, %lld steps (%s)", seconds(st.sim_time).c_str(), static_cast<long long>(st.sim_steps),
+              st.playing ? "playing" : "paused");
+  ImGui::Text("%.0f steps/s, real-time ratio %.2f", r.steps_per_second, r.real_time_ratio);
+  if (st.lag > 0.05) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "the physics cannot keep up: slow motion");
+  ImGui::Text("contacts %d, rollbacks %lld, fail-safe freezes %lld", st.contacts, static_cast<long long>(st.rollbacks),
+              static_cast<long long>(st.ccd_freezes + st.global_freezes));
+  const MonitorResult c = session.checks();
+  if (c.valid) {
+    const ImVec4 colour = c.true_intersections == 0 ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.3f, 0.3f, 1);
+    ImGui::TextColored(colour, "true intersections: %d", c.true_intersections);
+    if (std::isfinite(c.min_gap)) {
+      ImGui::SameLine();
+      ImGui::Text("  smallest gap %.4f", c.min_gap);
+    }
+    ImGui::TextDisabled("checked at t = %.2f s (%.0f ms a check)", c.sim_time, c.check_ms);
+  } else {
+    ImGui::TextDisabled("checking...");
+  }
+  ImGui::End();
+}
+
+// [SECTION] Scenario banner
+void Panels::scenario_banner(GuiModel& model) {
+  const auto& sc = model.session.scenario();
+  if (!sc) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 30), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(std::max(200.0f, std::min(560.0f, display.x - 700)), 400));
+  ImGui::Begin("Scenario", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(200.0f, std::min(540.0f, display.x - 720)));
+  ImGui::TextWrapped("%s: %s", sc->name.c_str(), sc->instruction.c_str());
+  ImGui::TextDisabled("Space plays, Play script shows it done; shadow4d run %s gives the same verdict",
+                      sc->file.filename().string().c_str());
+  const MonitorResult c = model.session.checks();
+  if (c.verdict) {
+    const bool pass = c.verdict->pass && c.true_intersections == 0;
+    ImGui::TextColored(pass ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.75f, 0.35f, 1), "%s", pass ? "PASS" : "not yet");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", c.verdict->detail.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::End();
 }
 
 // [SECTION] Generator dialog
@@ -238,12 +479,15 @@ void Panels::generator_dialog(GuiModel& model) {
       obj.shape = generate(info->name, generator_params_);
       obj.name = info->name + "-" + std::to_string(++model.created);
       if (replace) {
-        model.scene.objects.clear();
-        model.scene.frame = Frame<4>();
-        model.view.reset(model.scene);
+        Document d;
+        d.spec = info->name;
+        d.scene.objects.push_back(std::move(obj));
+        open(model, std::move(d));
         if (info->dim == 4) model.view.turn_to_generic_view();
+      } else {
+        model.scene().objects.push_back(std::move(obj));
+        model.document_changed = true;
       }
-      model.scene.objects.push_back(std::move(obj));
       model.status = "created " + info->name;
     } catch (const std::exception& e) {
       model.error = e.what();
@@ -257,11 +501,9 @@ void Panels::dialogs(GuiModel& model) {
   if (auto p = open_browser_.draw()) open(model, p->string());
   if (auto p = save_browser_.draw()) {
     try {
-      Scene to_save = model.scene;
-      model.view.apply_to(to_save);
       auto path = *p;
       if (path.extension() != ".json") path += ".json";
-      save_scene(to_save, path);
+      save_scene(scene_to_save(model), path);
       model.status = "saved " + path.string();
     } catch (const std::exception& e) {
       model.error = e.what();

@@ -1,12 +1,17 @@
 // The ImGui panels of the window: menu bar, view (4D rotation, colour, style), scene list,
-// generator dialog, legend, status line. They edit a GuiModel; the window loop acts on requests.
+// simulation (play, settings, status, checks), the scenario's instruction and verdict, generator
+// dialog, legend, status line. They edit a GuiModel; the window loop acts on its requests.
 #pragma once
+#include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "app/file_browser.hpp"
 #include "app/knot_names.hpp"
 #include "app/view_state.hpp"
+#include "interact/grab_tool.hpp"
+#include "interact/session.hpp"
 #include "io/scene.hpp"
 #include "render/scene_geometry.hpp"
 
@@ -16,19 +21,41 @@ namespace s4d {
 inline constexpr const char* kSketchHelp =
     "sketch: drag to draw a closed curve; hold shift where it passes under; Esc stops";
 
+enum class ToolChoice { kTouch, kSketchKnot };
+
+// How the view frames the document: a ball fixed when it opens (its 4D centre is seen through the
+// frame), so the picture holds still while the simulation moves the objects under the hand.
+struct ViewFit {
+  Vec4 centre = Vec4::Zero();
+  double radius = 0;
+};
+ViewFit fit_of(const Scene& scene);
+
+// What the window shows and edits: the document and its live simulation (session), how it is
+// looked at (view), the active tool, and the requests the panels leave for the window loop.
 struct GuiModel {
-  Scene scene;                 // what is shown (its frame/view are rewritten from `view` each frame)
+  Session session;
+  SessionOptions session_options;
   ViewState view;
+  ViewFit fit;
   std::string status;          // last message for the status line
-  std::string error;           // shown in a modal until dismissed
+  std::string error;           // shown until dismissed
+  // [requests]
   bool quit = false;
   bool want_screenshot = false;
   std::string screenshot_path = "shadow4d-screenshot.png";
-  int created = 0;             // counter for unique object names
-  bool open_haptics = false;   // request from the menu: show the haptics panel (starts the loop)
-  IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
-  bool sketching = false;      // Create > Sketch a knot: the left button draws (SketchTool)
+  bool open_haptics = false;   // show the haptics panel
+  bool document_changed = false;  // objects added or removed: restart the simulation from them
+  // [tools]
+  ToolChoice tool = ToolChoice::kTouch;
+  GrabTool grab;
   Curve<3> last_stroke;        // the last sketch's stroke (stroke_as_curve), for File > Save
+  // [drawn]
+  IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
+  int created = 0;             // counter for unique object names
+
+  Scene& scene() { return session.scene(); }
+  bool sketching() const { return tool == ToolChoice::kSketchKnot; }
 };
 
 class Panels {
@@ -37,14 +64,19 @@ class Panels {
   // Draws every panel for this frame; `fps` is shown in the view panel.
   void draw(GuiModel& model, float fps);
 
-  // Replaces the scene with what `spec` names (file or generator call); errors go to model.error
-  // and leave the current scene untouched.
+  // Replaces the document with what `spec` names (scene, scenario, mesh, curve or generator
+  // call) and starts simulating it; a scenario opens paused. Errors go to model.error and leave
+  // the current document untouched.
   static void open(GuiModel& model, const std::string& spec);
+  // Takes a document already read (the window's start, a test).
+  static void open(GuiModel& model, Document doc);
 
  private:
   void menu_bar(GuiModel& model);
   void view_panel(GuiModel& model, float fps);
   void scene_panel(GuiModel& model);
+  void simulation_panel(GuiModel& model);
+  void scenario_banner(GuiModel& model);
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);
@@ -57,6 +89,11 @@ class Panels {
   Params generator_params_;
   bool generator_dialog_open_ = false;
   KnotNames knot_names_;  // the Scene panel's named knots
+  std::chrono::steady_clock::time_point last_settings_send_{};
 };
+
+// The document's scene with the live shapes as they are now, objects moved by the simulation
+// turned into edited geometry (saved as meshes beside the scene file), the view's frame written in.
+Scene scene_to_save(GuiModel& model);
 
 }  // namespace s4d

@@ -139,6 +139,9 @@ void HapticLoop::apply(const HapticCommand& cmd, bool& reset) {
       scene_->reset();
       reset = true;
       break;
+    case HapticCommand::Kind::scene:
+      scene_->command(cmd.scene);
+      break;
     case HapticCommand::Kind::reset_stats:
       period_stats_.reset();
       work_stats_.reset();
@@ -237,6 +240,10 @@ void HapticLoop::publish() {
   const std::size_t n = static_cast<std::size_t>(scene_->point_count()) * s.point_dimension;
   if (s.points.size() != n) s.points.resize(n);  // allocates only when the scene's size changes
   scene_->copy_points(s.points);
+  const std::size_t nf = static_cast<std::size_t>(scene_->point_count());
+  if (s.flags.size() != nf) s.flags.resize(nf);
+  scene_->copy_flags(s.flags);
+  scene_->copy_status(s.status);
   s.reconnects = reconnects_;
   snapshots_.publish();
 }

@@ -30,11 +30,12 @@ struct HapticLoopConfig {
 
 // A UI request, copied through the bounded lock-free queue.
 struct HapticCommand {
-  enum class Kind : std::uint8_t { set_param, reset_scene, reset_stats, replace_device };
+  enum class Kind : std::uint8_t { set_param, reset_scene, reset_stats, replace_device, scene };
   Kind kind = Kind::reset_stats;
   int index = 0;            // set_param: parameter index
   double value = 0;         // set_param: new value
   Device* device = nullptr;  // replace_device: ownership passes to the loop
+  SceneCommand scene{};     // scene: handed to HapticScene::command
 };
 
 // What the renderer and panels see; immutable once published.
@@ -62,6 +63,8 @@ struct HapticSnapshot {
   int param_count = 0;
   std::vector<double> points;         // point_count x point_dimension, the scene's vertices
   int point_dimension = 3;
+  std::vector<std::uint8_t> flags;    // point_count, bit 0: pinned
+  SceneStatus status;                 // the simulating scene's status
   std::uint64_t reconnects = 0;       // successful reconnections
 };
 
@@ -94,6 +97,12 @@ class HapticLoop {
   bool set_param(int index, double value) { return post({HapticCommand::Kind::set_param, index, value}); }
   bool reset_scene() { return post({HapticCommand::Kind::reset_scene}); }
   bool reset_stats() { return post({HapticCommand::Kind::reset_stats}); }
+  bool send(const SceneCommand& cmd) {
+    HapticCommand c;
+    c.kind = HapticCommand::Kind::scene;
+    c.scene = cmd;
+    return post(c);
+  }
   // Swaps the device (the old one is destroyed on this thread later); throws Error if the queue is full.
   void replace_device(std::unique_ptr<Device> device);
   // The GUI pointer in device coordinates (m); one writer thread (the UI).

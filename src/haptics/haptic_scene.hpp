@@ -1,6 +1,7 @@
 // HapticScene: what the haptic loop runs each tick (the active tool's force model plus any simulation
 // steps). The loop only knows this interface, so it runs a sticky plane, a cloth or a test double.
 #pragma once
+#include <cstdint>
 #include <span>
 #include <string_view>
 
@@ -15,6 +16,35 @@ struct SceneParam {
   double value = 0;
   double min = 0, max = 1;
   const char* unit = "";  // e.g. "N/m"
+};
+
+// A request for the scene (a live simulation's tools and settings) copied through the loop's
+// queue: a code the scene defines and small payloads. Trivially copyable on purpose.
+struct SceneCommand {
+  int code = 0;
+  int i[2] = {0, 0};
+  double x[20] = {};
+};
+
+// What a simulating scene reports in every snapshot (zeros for scenes that do not simulate).
+struct SceneStatus {
+  double sim_time = 0;          // s simulated
+  std::int64_t sim_steps = 0;
+  bool simulating = false;      // the scene runs a physics world
+  bool playing = false;
+  bool script_running = false;
+  double script_time = 0;       // s since the script started
+  int contacts = 0;             // pairs handled by repulsion in the last step
+  std::int64_t rollbacks = 0, ccd_freezes = 0, global_freezes = 0, rejected_inputs = 0;
+  int held_vertex = -1;         // the vertex on the rubber band, -1 when none
+  int grab_mode = 0;            // 0: in the shadow, 1: along w (the shadow ray)
+  Vec3 band_from = Vec3::Zero();  // shadow space: the hand's end of the rubber band
+  Vec3 band_to = Vec3::Zero();    // shadow space: the held vertex
+  double band_force = 0;        // N, what the band pulls the vertex with
+  double lag = 0;               // s the simulation trails the haptic clock
+  int pinned = 0;               // pinned vertices
+  std::uint64_t settings_revision = 0;  // bumps when physics settings were applied
+  char message[160] = {};       // the last request the scene refused, and why
 };
 
 // Everything a scene computes in one tick.
@@ -48,6 +78,12 @@ class HapticScene {
   virtual int point_dimension() const { return 3; }
   // Copies point_count() * point_dimension() values into `out` (exactly that size). No allocation.
   virtual void copy_points(std::span<double> out) const {}
+
+  // Loop thread: a request from the UI (see SceneCommand). Must not block or throw.
+  virtual void command(const SceneCommand& cmd) {}
+  // Loop thread, when publishing: the scene's status and one flag byte per point (bit 0: pinned).
+  virtual void copy_status(SceneStatus& out) const {}
+  virtual void copy_flags(std::span<std::uint8_t> out) const {}
 };
 
 }  // namespace s4d

@@ -37,7 +37,6 @@ SceneObject load_object(const std::string& spec) {
     o.name = call.name;
     o.generator = std::move(call);
   }
-  o.shape = translated(std::move(o.shape), o.offset);
   return o;
 }
 

@@ -80,25 +80,4 @@ std::string native_extension(const Shape& shape) {
   return ".curve";
 }
 
-Shape translated(Shape shape, const Vec4& offset) {
-  if (offset.isZero(0)) return shape;
-  if (offset.w() != 0) {
-    if (auto* c = std::get_if<Curve<3>>(&shape)) shape = lift_to_4d(*c);
-    if (auto* s = std::get_if<Surface<3>>(&shape)) shape = lift_to_4d(*s);
-  }
-  std::visit(
-      [&](auto& s) {
-        using T = std::decay_t<decltype(s)>;
-        constexpr int D = T::kDim;
-        const Vec<D> o = offset.head<D>();
-        if constexpr (std::is_same_v<T, Surface<D>>) {
-          translate(s.vertices, o);
-        } else {
-          for (auto& comp : s.components) translate(comp.points, o);
-        }
-      },
-      shape);
-  return shape;
-}
-
 }  // namespace s4d

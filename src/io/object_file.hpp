@@ -18,8 +18,4 @@ void write_shape_file(const Shape& shape, const std::filesystem::path& path);
 // The extension save_scene uses for geometry with no other home: .off, .4off or .curve.
 std::string native_extension(const Shape& shape);
 
-// Moves a shape by `offset`. An R^3 shape stays in R^3 unless the offset has a w component, in
-// which case it is lifted to R^4 first (it cannot be moved off w = 0 otherwise).
-Shape translated(Shape shape, const Vec4& offset);
-
 }  // namespace s4d

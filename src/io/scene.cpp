@@ -160,13 +160,15 @@ ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   if (j.contains("intersections")) v.intersections = boolean(j["intersections"], ctx.at("intersections"));
   if (j.contains("tube_radius"))
     v.tube_radius = number_in(j["tube_radius"], ctx.at("tube_radius"), 0, 1e6, true);
+  // Below 0.05 a surface all but vanishes, which reads as a bug rather than a setting.
   if (j.contains("background")) v.background = colour(j["background"], ctx.at("background"));
   return v;
 }
 
 PhysicsSettings parse_physics(const Json& j, const Ctx& ctx) {
   require_object(j, ctx);
-  check_keys(j, ctx, {"time_step", "thickness", "gravity", "mass", "stiffness", "beta", "damping", "friction",
+  check_keys(j, ctx, {"time_step", "thickness", "gravity", "mass", "stiffness", "shear_scale", "bending_scale",
+                      "beta", "damping", "spring_damping", "friction", "max_step_motion", "collisions",
                       "integrator"});
   PhysicsSettings p;
   if (j.contains("time_step")) p.time_step = number_in(j["time_step"], ctx.at("time_step"), 0, 1, true);
@@ -177,6 +179,14 @@ PhysicsSettings parse_physics(const Json& j, const Ctx& ctx) {
   }
   if (j.contains("mass")) p.mass = number_in(j["mass"], ctx.at("mass"), 0, 1e6, true);
   if (j.contains("stiffness")) p.stiffness = number_in(j["stiffness"], ctx.at("stiffness"), 0, 1e9);
+  if (j.contains("shear_scale")) p.shear_scale = number_in(j["shear_scale"], ctx.at("shear_scale"), 0, 10);
+  if (j.contains("bending_scale"))
+    p.bending_scale = number_in(j["bending_scale"], ctx.at("bending_scale"), 0, 10);
+  if (j.contains("spring_damping"))
+    p.spring_damping = number_in(j["spring_damping"], ctx.at("spring_damping"), 0, 1e6);
+  if (j.contains("max_step_motion"))
+    p.max_step_motion = number_in(j["max_step_motion"], ctx.at("max_step_motion"), 0, 1e6);
+  if (j.contains("collisions")) p.collisions = boolean(j["collisions"], ctx.at("collisions"));
   // |N|^(1+β) must grow with |N|, so β > -1; large β makes the spring numerically explosive.
   if (j.contains("beta")) p.beta = number_in(j["beta"], ctx.at("beta"), -1, 4, true);
   if (j.contains("damping")) p.damping = number_in(j["damping"], ctx.at("damping"), 0, 1e6);
@@ -190,9 +200,45 @@ PhysicsSettings parse_physics(const Json& j, const Ctx& ctx) {
   return p;
 }
 
+// An object's placement keys: "matrix" (4 rows of 4 numbers, or 16 in a row), "scale",
+// "mirror" (axes 0-3), "w_by_row", "offset" (3 or 4 numbers).
+Placement parse_placement(const Json& j, const Ctx& ctx) {
+  Placement p;
+  if (j.contains("matrix")) {
+    const Ctx mc = ctx.at("matrix");
+    const Json& m = j["matrix"];
+    std::vector<double> v;
+    if (m.is_array() && m.size() == 4 && m[0].is_array()) {
+      for (std::size_t i = 0; i < 4; ++i) {
+        const auto row = numbers(m[i], mc.at(i), {4});
+        v.insert(v.end(), row.begin(), row.end());
+      }
+    } else {
+      v = numbers(m, mc, {16});
+    }
+    Mat<4> r;
+    for (int i = 0; i < 16; ++i) r(i / 4, i % 4) = v[static_cast<std::size_t>(i)];
+    p.matrix = r;
+  }
+  if (j.contains("scale")) p.scale = number_in(j["scale"], ctx.at("scale"), 1e-6, 1e6);
+  if (j.contains("mirror")) {
+    const Ctx mc = ctx.at("mirror");
+    if (!j["mirror"].is_array()) mc.fail(std::string("must be an array of axes, found ") + type_name(j["mirror"]));
+    for (std::size_t i = 0; i < j["mirror"].size(); ++i) {
+      const double a = number_in(j["mirror"][i], mc.at(i), 0, 3);
+      if (a != std::floor(a)) mc.at(i).fail("an axis is 0 (x), 1 (y), 2 (z) or 3 (w)");
+      p.mirror.push_back(static_cast<int>(a));
+    }
+  }
+  if (j.contains("w_by_row")) p.w_by_row = number_in(j["w_by_row"], ctx.at("w_by_row"), -1e3, 1e3);
+  if (j.contains("offset")) p.offset = vec4_or_3(j["offset"], ctx.at("offset"));
+  return p;
+}
+
 SceneObject parse_object(const Json& j, const Ctx& ctx, const std::filesystem::path& base) {
   require_object(j, ctx);
-  check_keys(j, ctx, {"name", "generator", "params", "path", "offset", "colour"});
+  check_keys(j, ctx, {"name", "generator", "params", "path", "offset", "colour", "matrix", "scale", "mirror",
+                      "w_by_row", "mass"});
   const bool gen = j.contains("generator"), file = j.contains("path");
   if (gen == file) ctx.fail("needs exactly one of 'generator' or 'path'");
   if (j.contains("params") && !gen) ctx.fail("'params' is only allowed with 'generator'");
@@ -201,7 +247,8 @@ SceneObject parse_object(const Json& j, const Ctx& ctx, const std::filesystem::p
     o.name = string(j["name"], ctx.at("name"));
     if (o.name.empty()) ctx.at("name").fail("must not be empty");
   }
-  if (j.contains("offset")) o.offset = vec4_or_3(j["offset"], ctx.at("offset"));
+  o.placement = parse_placement(j, ctx);
+  if (j.contains("mass")) o.mass = number_in(j["mass"], ctx.at("mass"), 0, 1e6);
   if (j.contains("colour")) o.colour = colour(j["colour"], ctx.at("colour"));
   if (gen) {
     GeneratorCall call;
@@ -238,7 +285,13 @@ SceneObject parse_object(const Json& j, const Ctx& ctx, const std::filesystem::p
     o.source_path = p.string();
     if (o.name.empty()) o.name = p.stem().string();
   }
-  o.shape = translated(std::move(o.shape), o.offset);
+  try {
+    o.shape = placed(std::move(o.shape), o.placement);
+  } catch (const ParseError&) {
+    throw;
+  } catch (const std::exception& e) {
+    ctx.fail(e.what());
+  }
   return o;
 }
 
@@ -283,16 +336,15 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin) 
   const Json root = parse_json(text, file);
   const Ctx ctx{file, ""};
   if (!root.is_object()) ctx.fail(std::string("a scene must be a JSON object, found ") + type_name(root));
-  check_keys(root, ctx, {"version", "description", "objects", "frame", "view", "physics"});
+  check_keys(root, ctx, {"version", "description", "objects", "frame", "view", "physics", "scenario"});
   if (!root.contains("version")) ctx.fail("missing \"version\" (this program reads version " +
                                           std::to_string(kSceneVersion) + ")");
   const Json& ver = root["version"];
   if (!ver.is_number_integer() || ver.get<long long>() != kSceneVersion)
     ctx.at("version").fail("unsupported scene version " + ver.dump() + " (this program reads version " +
                            std::to_string(kSceneVersion) + ")");
-  if (root.contains("description")) string(root["description"], ctx.at("description"));
-
   Scene scene;
+  if (root.contains("description")) scene.description = string(root["description"], ctx.at("description"));
   const std::filesystem::path base = origin.parent_path();
   if (root.contains("objects")) {
     const Json& objs = root["objects"];
@@ -317,6 +369,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin) 
   if (root.contains("frame")) scene.frame = parse_frame(root["frame"], ctx.at("frame"));
   if (root.contains("view")) scene.view = parse_view(root["view"], ctx.at("view"));
   if (root.contains("physics")) scene.physics = parse_physics(root["physics"], ctx.at("physics"));
+  if (root.contains("scenario")) scene.scenario = require_object(root["scenario"], ctx.at("scenario")).dump();
   return scene;
 }
 

@@ -10,6 +10,7 @@
 #include "core/colour_map.hpp"
 #include "core/frame.hpp"
 #include "shape/generators.hpp"
+#include "shape/placement.hpp"
 #include "shape/shape.hpp"
 
 namespace s4d {
@@ -22,8 +23,10 @@ struct SceneObject {
   std::string source_path;                   // the file it was read from, when loaded
   Shape shape;                               // the geometry itself (built or loaded)
   std::optional<Vec3f> colour;               // fixed colour when depth colouring is off
-  // Translation in R^4 applied once when the object is built or loaded.
-  Vec4 offset = Vec4::Zero();
+  // Linear map, scale, mirrors, w ramp and translation applied once when the object is built
+  // or loaded (shape holds the placed geometry).
+  Placement placement;
+  double mass = 0;                           // kg per vertex in the simulation; 0 = physics.mass
 };
 
 struct ViewSettings {
@@ -36,31 +39,48 @@ struct ViewSettings {
   bool wireframe = false;      // draw triangle edges over the surface
   bool shadow = false;         // flat-shaded shadow drawing (no lighting)
   // Draw the intersection curves of the R^4 surfaces' shadow: shadow-only crossings (the sheets
-  // are apart in w) in yellow, true 4D intersections in magenta (the paper's depth test); and a
-  // dot on the over strand of each crossing of the curves as the camera sees them.
+  // are apart in w) in yellow with a red line on the sheet nearer in w and a blue one on the
+  // farther (the paper's above-below markings), true 4D intersections in magenta (the paper's
+  // depth test), a bead where a curve ends inside the surface (a pinch point); and a dot on the
+  // over strand of each crossing of the curves as the camera sees them.
   bool intersections = false;
   double tube_radius = 0.03;   // curve tube radius, in scene units
+  // When fit_radius > 0 the camera frames this ball (shadow space) instead of the drawn objects:
+  // the window fixes it while a simulation moves them, so the view holds still under the hand.
+  // Not stored in scene files.
+  Vec3 fit_centre = Vec3::Zero();
+  double fit_radius = 0;
   Vec3f background{0.08f, 0.09f, 0.11f};
 };
 
-// Physics parameters stored with a scene (used by the physics layer; validated on load).
+// Physics parameters stored with a scene: the simulation of its surfaces (scenario/world_builder
+// turns them into the physics layer's parameters; validated on load).
 struct PhysicsSettings {
   double time_step = 1e-3;     // s; the haptic tick
   double thickness = 0.02;     // δ, collision thickness, scene units
   Vec4 gravity = Vec4::Zero(); // m/s², any direction of R^4
   double mass = 1e-3;          // kg per vertex
-  double stiffness = 50;       // N/m, structural springs (shear and bending scale from it)
+  double stiffness = 50;       // N/m, structural springs
+  double shear_scale = 0.5;    // shear stiffness = shear_scale × stiffness
+  double bending_scale = 0.1;  // bending stiffness = bending_scale × stiffness
   double beta = 0;             // exponent of the generalised Hooke law (paper Eq. 1)
-  double damping = 0.02;       // N·s/m
-  double friction = 0.3;       // Coulomb coefficient between touching surfaces
+  double damping = 0.02;       // N·s/m, on every vertex velocity
+  double spring_damping = 0.02;  // N·s/m, along each spring
+  double friction = 0.3;       // Coulomb coefficient between touching surfaces (0 = slippery)
+  double max_step_motion = 0;  // m per step, 0 = δ (the paper's clamp of a frame's motion)
+  bool collisions = true;      // self- and mutual collision avoidance
   std::string integrator = "symplectic-euler";
 };
 
 struct Scene {
+  std::string description;     // what the scene shows, for a person (optional)
   std::vector<SceneObject> objects;
   Frame<4> frame;              // the 4D view rotation; R^3 objects sit at w = 0
   ViewSettings view;
   PhysicsSettings physics;
+  // A scenario file's "scenario" object (its name, instruction, script and verdict) as JSON
+  // text, read by the scenario layer; empty for a plain scene. Written back by save_scene.
+  std::string scenario;
 };
 
 // Reads a scene file. Mesh paths are resolved relative to the scene file. Throws ParseError

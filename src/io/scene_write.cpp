@@ -48,18 +48,30 @@ std::string path_for_scene(const std::string& source, const std::filesystem::pat
   return rel.empty() ? abs_source.string() : rel.generic_string();
 }
 
+void write_placement(const Placement& p, Json& j) {
+  if (p.matrix) {
+    Json m = Json::array();
+    for (int i = 0; i < 4; ++i) m.push_back(array(p.matrix->row(i), 4));
+    j["matrix"] = std::move(m);
+  }
+  if (p.scale != 1) j["scale"] = number(p.scale);
+  if (!p.mirror.empty()) j["mirror"] = p.mirror;
+  if (p.w_by_row != 0) j["w_by_row"] = number(p.w_by_row);
+  if (!p.offset.isZero(0)) j["offset"] = array(p.offset, 4);
+}
+
 }  // namespace
 
 void save_scene(const Scene& scene, const std::filesystem::path& path) {
   const std::filesystem::path dir = path.parent_path();
   Json root;
   root["version"] = kSceneVersion;
+  if (!scene.description.empty()) root["description"] = scene.description;
   Json objects = Json::array();
   std::set<std::string> mesh_names;
   for (const SceneObject& o : scene.objects) {
     Json j;
     j["name"] = o.name;
-    const bool has_offset = !o.offset.isZero(0);
     if (o.generator) {
       j["generator"] = o.generator->name;
       Json params = Json::object();
@@ -69,12 +81,12 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
         params[k] = number(v);
       }
       if (!params.empty()) j["params"] = params;
-      if (has_offset) j["offset"] = array(o.offset, 4);
+      write_placement(o.placement, j);
     } else if (!o.source_path.empty()) {
       j["path"] = path_for_scene(o.source_path, dir);
-      if (has_offset) j["offset"] = array(o.offset, 4);
+      write_placement(o.placement, j);
     } else {
-      // Edited geometry: the offset is already in the vertices, so it is not written again.
+      // Edited geometry: the placement is already in the vertices, so it is not written again.
       std::string file = path.stem().string() + "." + safe_name(o.name);
       for (int k = 2; mesh_names.count(file); ++k)
         file = path.stem().string() + "." + safe_name(o.name) + "-" + std::to_string(k);
@@ -84,6 +96,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
       j["path"] = file;
     }
     if (o.colour) j["colour"] = array(*o.colour, 3);
+    if (o.mass > 0) j["mass"] = number(o.mass);
     objects.push_back(std::move(j));
   }
   root["objects"] = std::move(objects);
@@ -114,11 +127,23 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
   physics["gravity"] = array(p.gravity, 4);
   physics["mass"] = number(p.mass);
   physics["stiffness"] = number(p.stiffness);
+  physics["shear_scale"] = number(p.shear_scale);
+  physics["bending_scale"] = number(p.bending_scale);
   physics["beta"] = number(p.beta);
   physics["damping"] = number(p.damping);
+  physics["spring_damping"] = number(p.spring_damping);
   physics["friction"] = number(p.friction);
+  physics["max_step_motion"] = number(p.max_step_motion);
+  physics["collisions"] = p.collisions;
   physics["integrator"] = p.integrator;
   root["physics"] = std::move(physics);
+  if (!scene.scenario.empty()) {
+    try {
+      root["scenario"] = Json::parse(scene.scenario);
+    } catch (const Json::exception& e) {
+      throw Error("cannot save scene " + path.string() + ": its scenario section is not JSON: " + e.what());
+    }
+  }
 
   std::string text;
   try {

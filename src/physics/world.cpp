@@ -147,6 +147,30 @@ void World<D>::set_state(std::span<const Vec<D>> x, std::span<const Vec<D>> v) {
 }
 
 template <int D>
+void World<D>::set_model(Model<D> model) {
+  if (model.nv != model_.nv)
+    throw Error("physics: set_model needs " + std::to_string(model_.nv) + " vertices, got " +
+                std::to_string(model.nv));
+  model_ = std::move(model);
+  collision_ = CollisionSolver<D>(model_);
+}
+
+template <int D>
+std::uint64_t World<D>::state_hash() const {
+  std::uint64_t h = 14695981039346656037ull;
+  auto add = [&h](const void* p, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  add(data_.x.data(), data_.x.size() * sizeof(Vec<D>));
+  add(data_.v.data(), data_.v.size() * sizeof(Vec<D>));
+  add(data_.pinned.data(), data_.pinned.size());
+  add(&data_.time, sizeof data_.time);
+  add(&data_.steps, sizeof data_.steps);
+  return h;
+}
+
+template <int D>
 double World<D>::kinetic_energy() const {
   double e = 0;
   for (int i = 0; i < model_.nv; ++i) e += 0.5 * model_.mass[i] * data_.v[i].squaredNorm();

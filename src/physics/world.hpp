@@ -69,6 +69,12 @@ class World {
 
   // Replaces the state (e.g. restoring a snapshot); sizes must match. Throws s4d::Error.
   void set_state(std::span<const Vec<D>> x, std::span<const Vec<D>> v);
+  // Replaces the model (new parameters, a contact layer fitted to the current gaps) keeping the
+  // state, pins, targets and tool forces; the vertex count must match. Throws s4d::Error.
+  void set_model(Model<D> model);
+  // FNV-1a over the bits of positions, velocities, pins, time and step count: equal hashes
+  // after N steps mean the same run (Box2D's determinism test).
+  std::uint64_t state_hash() const;
 
   // Energies, J: kinetic, spring potential (∫ of Eq. 1), gravity potential (relative to x = 0).
   double kinetic_energy() const;

@@ -364,7 +364,8 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     all_points.insert(all_points.end(), pos.begin(), pos.end());
   }
   g.bounds = bounding_sphere(all_points);
-  g.camera = make_camera(g.bounds, view.trackball, view.distance, view.fov_deg, aspect, view.zoom);
+  const BoundingSphere framed = view.fit_radius > 0 ? BoundingSphere{view.fit_centre, view.fit_radius} : g.bounds;
+  g.camera = make_camera(framed, view.trackball, view.distance, view.fov_deg, aspect, view.zoom);
 
   // Depth per anchor: w for R^4 objects; for R^3 ones the distance in front of the camera.
   std::vector<std::vector<double>> anchor_depth(built.size());

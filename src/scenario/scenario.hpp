@@ -1,71 +1,66 @@
-// Scenario files (scenarios/*.json): objects, physics, a scripted tool and the outcome to check.
-// This is the data side of `shadow4d run`; scenario_run.cpp executes it.
+// Scenario files (scenarios/*.json): a scene (objects, physics, frame, view — read by the one
+// scene validator, io/scene) plus a "scenario" section: a one-line instruction for doing it by
+// hand, a scripted tool, and the outcome the run must reach.
 #pragma once
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
-#include "core/vec.hpp"
-#include "physics/model.hpp"
-#include "shape/generators.hpp"
+#include "io/scene.hpp"
 
-namespace s4d::scenario {
+namespace s4d {
 
-struct ObjectSpec {
-  std::string name;
-  GeneratorCall generator;
-  double scale = 1;
-  std::vector<double> matrix;                   // 16 numbers, row-major 4 × 4 linear map (optional)
-  std::vector<int> mirror;                      // axes whose sign is flipped
-  double w_by_row = 0;                          // D = 4: w += amount × (row/(rows-1) - ½)
-  std::vector<double> offset;                   // D numbers, added last
-  double mass = 0;                              // kg per vertex, 0 = physics.mass
-};
-
-// Which vertices of an object a tool acts on.
-struct Selection {
+// Which vertices of an object a scripted tool acts on.
+struct VertexSelection {
   std::string object;
   bool all = false;
-  std::vector<int> indices;                      // explicit local vertex indices (-1 = the last)
-  int axis = 0;                                  // "extreme": the `count` vertices furthest
-  bool max_side = true;                          //   along ±axis
+  std::vector<int> indices;  // explicit local vertex indices (-1 = the last)
+  int axis = 0;              // "extreme": the `count` vertices furthest along ±axis
+  bool max_side = true;
   int count = 1;
 };
 
 // A tool as a user would drive it: "hold" pins; "move" pins and carries the vertices by `by`
 // over [from, to] (smooth ramp); "pull" drags them through a force-limited spring to the same
 // moving target (virtual coupling, what a haptic device feels).
-struct Action {
+struct ScriptAction {
   std::string kind;
-  Selection select;
-  double from = 0, to = 0;                      // s
-  std::vector<double> by;                       // D numbers, m
-  double stiffness = 50;                        // N/m per vertex, "pull"
-  double max_force = 1;                         // N per vertex, "pull"
+  VertexSelection select;
+  double from = 0, to = 0;   // s
+  std::vector<double> by;    // D numbers, m
+  double stiffness = 50;     // N/m per vertex, "pull"
+  double max_force = 1;      // N per vertex, "pull"
 };
 
-struct Verdict {
+struct VerdictSpec {
   std::string kind;  // untied | knotted | slides-off | lifted | deforms | shadow-clean
-  std::map<std::string, double> numbers;        // thresholds, by name
-  std::string object;                           // the object the verdict looks at
-  std::vector<double> close_via;                // knotted/untied: direction to close the centre line
-  std::string view;                             // shadow-clean: the 3D view, rotations "yw=30,xz=10"
+  std::map<std::string, double> numbers;  // thresholds, by name
+  std::string object;                     // the object the verdict looks at
+  std::vector<double> close_via;          // knotted/untied: direction to close the centre line
+  std::string view;                       // shadow-clean: the 3D view, rotations "yw=30,xz=10"
 };
 
-struct ScenarioSpec {
-  std::string name, description;
+struct Scenario {
+  Scene scene;                  // objects as placed, physics, frame, view
   std::filesystem::path file;
-  int dim = 4;
-  double duration = 1;                          // s of simulated time
-  int frames = 4;                               // PNG frames saved (plus the initial one)
-  PhysicsParams<4> physics;                     // gravity truncated to dim for D = 3
-  std::vector<ObjectSpec> objects;
-  std::vector<Action> script;
-  Verdict verdict;
+  std::string name, description;
+  std::string instruction;      // one line: what to do by hand in the window
+  int dim = 4;                  // of the simulation: 3 when every surface lies in R^3
+  double duration = 1;          // s of simulated time
+  int frames = 4;               // PNG frames `shadow4d run` saves (plus the initial one)
+  std::vector<ScriptAction> script;
+  VerdictSpec verdict;
+
+  int object_index(const std::string& name) const;  // -1 when there is none
 };
 
-// Throws ParseError("file:line: message") on malformed input.
-ScenarioSpec load_scenario(const std::filesystem::path& path);
+// Reads a scenario file. Throws ParseError("file: where: message") on malformed input, or when
+// the file is a plain scene (no "scenario" section).
+Scenario load_scenario(const std::filesystem::path& path);
+// The scenario of a scene read by load_scene (its "scenario" section); `origin` names it in errors.
+Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin);
+// Whether a scene file carries a scenario section (without validating it).
+inline bool is_scenario(const Scene& scene) { return !scene.scenario.empty(); }
 
-}  // namespace s4d::scenario
+}  // namespace s4d

@@ -1,5 +1,5 @@
 // Knot checks on ribbon centre lines (through the knot engine) and mesh components.
-#include "scenario_verdicts.hpp"
+#include "scenario/verdict_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
 
-namespace s4d::scenario {
+namespace s4d {
 
 std::vector<Vec3> ribbon_centre_line(const std::vector<Vec4>& x, const Grid& grid) {
   std::vector<Vec3> c;
@@ -128,4 +128,4 @@ std::vector<int> vertex_components(int nv, const std::vector<Triangle>& tris, in
   return label;
 }
 
-}  // namespace s4d::scenario
+}  // namespace s4d

@@ -8,7 +8,7 @@
 #include "core/vec.hpp"
 #include "shape/surface.hpp"
 
-namespace s4d::scenario {
+namespace s4d {
 
 struct KnotCheck {
   int min_crossings = 0;      // of the closed 3D centre line, over the views checked
@@ -40,4 +40,4 @@ ShadowCheck check_shadow(const Surface<4>& surface, const std::string& view);
 // Connected components of a triangle mesh (vertex labels 0..k-1).
 std::vector<int> vertex_components(int nv, const std::vector<Triangle>& tris, int* count);
 
-}  // namespace s4d::scenario
+}  // namespace s4d

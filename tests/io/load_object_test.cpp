@@ -83,12 +83,15 @@ TEST(ObjectFile, WriteByExtensionChecksTheKind) {
   EXPECT_EQ(std::get<Curve<3>>(read_shape_file(dir / "x.vect")).point_count(), 5u);
 }
 
-TEST(ObjectFile, TranslateKeepsR3UnlessWIsUsed) {
+TEST(ObjectFile, OffsetKeepsR3UnlessWIsUsed) {
   Surface<3> s;
   s.vertices = {Vec3(1, 2, 3)};
-  const Shape a = translated(s, Vec4(1, 1, 1, 0));
+  Placement p;
+  p.offset = Vec4(1, 1, 1, 0);
+  const Shape a = placed(s, p);
   EXPECT_EQ(std::get<Surface<3>>(a).vertices[0], Vec3(2, 3, 4));
-  const Shape b = translated(s, Vec4(0, 0, 0, -2));
+  p.offset = Vec4(0, 0, 0, -2);
+  const Shape b = placed(s, p);
   EXPECT_EQ(std::get<Surface<4>>(b).vertices[0], Vec4(1, 2, 3, -2));
 }
 

@@ -36,7 +36,7 @@ TEST(Scene, GeneratedObjectWithOffsetAndColour) {
   ASSERT_TRUE(o.generator.has_value());
   EXPECT_EQ(o.generator->name, "sphere");
   EXPECT_EQ(o.generator->params.at("n"), 8);
-  EXPECT_EQ(o.offset, Vec4(1, 2, 3, 4));
+  EXPECT_EQ(o.placement.offset, Vec4(1, 2, 3, 4));
   ASSERT_TRUE(o.colour.has_value());
   EXPECT_EQ(*o.colour, Vec3f(0.5f, 0.25f, 1.0f));
   const auto ref = std::get<Surface<4>>(generate("sphere", {{"n", 8}, {"radius", 2}}));
@@ -209,7 +209,7 @@ TEST(Scene, SaveThenLoadRoundTrip) {
   s.objects.push_back(edited);
   Curve<3> knot = std::get<Curve<3>>(generate("torus-knot", {{"n", 40}}));
   knot.components[0].closed = false;
-  s.objects.push_back({"open knot", std::nullopt, "", knot, std::nullopt, Vec4::Zero()});
+  s.objects.push_back({"open knot", std::nullopt, "", knot, std::nullopt, {}});
   s.frame.rotate(*parse_plane("xw", 4), 0.3);
   s.frame.rotate(*parse_plane("yz", 4), -1.1);
   s.view.colour_map = ColourMap::kGrey;

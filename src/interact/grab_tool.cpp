@@ -1,0 +1,147 @@
+// The grab tool's events: pick on hover, band on press, the hand on the drag plane.
+#include "interact/grab_tool.hpp"
+
+#include <cmath>
+
+#include "interact/live_simulation.hpp"
+#include "interact/session.hpp"
+
+namespace s4d {
+
+std::string GrabTool::help() const {
+  std::string h = "touch: drag a surface to pull it (Alt: along w), Tab: next sheet, P / right click: pin";
+  if (hits_.size() > 1)
+    h = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) + " under the cursor (Tab: next); " + h;
+  return h;
+}
+
+int GrabTool::world_vertex(const SheetHit& h, const Session& s) {
+  const int first = s.first_vertex(h.object);
+  return first < 0 ? -1 : first + h.vertex;
+}
+
+void GrabTool::hover(const ToolInput& in, Session& s) {
+  hits_ = pick_sheets(s.scene(), in.view.eye, in.view.ray);
+  if ((in.view.cursor - tab_cursor_).norm() > 4) sheet_ = 0;
+  if (sheet_ >= static_cast<int>(hits_.size())) sheet_ = 0;
+  // The mouse's hand rests where a press would take hold, so the band starts slack.
+  hand_ = hits_.empty() ? in.view.on_plane_through(in.view.centre) : hits_[static_cast<std::size_t>(sheet_)].point;
+  s.set_hand(hand_, false);
+}
+
+bool GrabTool::press(const ToolInput& in, Session& s) {
+  hover(in, s);
+  if (hits_.empty() || !s.simulating()) return false;
+  const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
+  const int v = world_vertex(h, s);
+  if (v < 0) return false;
+  along_w_ = in.alt;
+  plane_point_ = h.point;
+  hand_ = h.point;
+  s.set_hand(hand_, true);
+  s.send(live_grab(v, along_w_ ? 1 : 0, hand_));
+  holding_ = true;
+  message_ = "holding vertex " + std::to_string(v) + (along_w_ ? " (along w)" : "");
+  return true;
+}
+
+void GrabTool::drag(const ToolInput& in, Session& s) {
+  if (!holding_) return;
+  if (in.alt != along_w_) {
+    along_w_ = in.alt;
+    s.send(live_command(LiveCode::kGrabMode, 0, along_w_ ? 1 : 0));
+  }
+  hand_ = in.view.on_plane_through(plane_point_);
+  s.set_hand(hand_, true);
+}
+
+void GrabTool::release(const ToolInput& in, Session& s) {
+  if (!holding_) return;
+  holding_ = false;
+  s.send(live_command(LiveCode::kRelease));
+  s.set_hand(hand_, false);
+}
+
+bool GrabTool::wheel(double steps, const ToolInput& in, Session& s) {
+  if (!holding_ || !std::isfinite(steps)) return false;
+  // Twenty pixels' worth of depth a notch: the hand moves toward (or away from) the eye.
+  plane_point_ += steps * 20 * in.view.pixel_size * in.view.toward_eye;
+  hand_ = in.view.on_plane_through(plane_point_);
+  s.set_hand(hand_, true);
+  return true;
+}
+
+void GrabTool::toggle_pin_under_cursor(Session& s) {
+  if (hits_.empty()) return;
+  const int v = world_vertex(hits_[static_cast<std::size_t>(sheet_)], s);
+  if (v < 0) return;
+  const bool was = s.pinned(v);
+  s.send(live_command(LiveCode::kTogglePin, v));
+  message_ = (was ? "unpinned vertex " : "pinned vertex ") + std::to_string(v);
+}
+
+bool GrabTool::right_click(const ToolInput& in, Session& s) {
+  hover(in, s);
+  if (hits_.empty() || !s.simulating()) return false;
+  toggle_pin_under_cursor(s);
+  return true;
+}
+
+bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
+  if (k == ToolKey::kTab && !holding_) {
+    hover(in, s);
+    if (hits_.size() > 1) {
+      sheet_ = (sheet_ + 1) % static_cast<int>(hits_.size());
+      tab_cursor_ = in.view.cursor;
+      hand_ = hits_[static_cast<std::size_t>(sheet_)].point;
+      s.set_hand(hand_, false);
+      message_ = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) +
+                 " (w = " + std::to_string(hits_[static_cast<std::size_t>(sheet_)].w).substr(0, 6) + ")";
+    }
+    return true;
+  }
+  if (k == ToolKey::kPin && s.simulating()) {
+    if (holding_ && s.snapshot()) {  // pin the held vertex where it is and let go
+      const int v = s.snapshot()->status.held_vertex;
+      release(in, s);
+      if (v >= 0) s.send(live_command(LiveCode::kPin, v));
+      message_ = "pinned vertex " + std::to_string(v);
+    } else {
+      hover(in, s);
+      toggle_pin_under_cursor(s);
+    }
+    return true;
+  }
+  return false;
+}
+
+void GrabTool::overlay(Overlay& o, const Session& s) const {
+  const HapticSnapshot* snap = s.snapshot();
+  if (!holding_ && !hits_.empty()) {
+    const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
+    o.dots.push_back({h.point, overlay_colour(1, 1, 1, 0.9), 6, false});
+    for (std::size_t i = 0; i < hits_.size(); ++i)
+      if (static_cast<int>(i) != sheet_) o.dots.push_back({hits_[i].point, overlay_colour(1, 1, 1, 0.35), 3, false});
+  }
+  if (!snap) return;
+  for (std::size_t v = 0; v < snap->flags.size(); ++v)
+    if (snap->flags[v] & 1) {
+      const Vec3 p = s.vertex_shadow(static_cast<int>(v));
+      if (p.allFinite()) o.dots.push_back({p, overlay_colour(1, 0.55, 0.1), 4, true});
+    }
+  if (snap->status.held_vertex >= 0) {
+    // The band: green slack, yellow, red at the most it may pull.
+    const double maxf = snap->param_count > kBandMaxForce ? snap->params[kBandMaxForce].value : 1;
+    const double t = std::clamp(snap->status.band_force / std::max(maxf, 1e-9), 0.0, 1.0);
+    const std::uint32_t c = overlay_colour(std::min(1.0, 2 * t), std::min(1.0, 2 * (1 - t)), 0.15);
+    const Vec3 to = s.vertex_shadow(snap->status.held_vertex);
+    o.lines.push_back({snap->status.band_from, to.allFinite() ? to : snap->status.band_to, c, 3});
+    o.dots.push_back({snap->status.band_from, c, 5, true});
+  }
+  if (std::string_view(snap->device_name) != "mouse") {
+    // A device's point: where its button would take hold.
+    o.dots.push_back({s.mapping().to_shadow(snap->device.position), overlay_colour(0.3, 0.9, 1), 8, false});
+  }
+}
+
+}  // namespace s4d

@@ -1,0 +1,44 @@
+// GrabTool (paper 5.1.4, Fig. 7): left-drag on a surface holds the vertex under the cursor on a
+// rubber band that the haptic loop renders; Alt drags it along the shadow ray (w) instead; Tab
+// picks the next sheet under the cursor; P or a right click pins and unpins; the wheel moves the
+// hand in depth while holding. On empty space the drag turns the view as usual.
+#pragma once
+#include <vector>
+
+#include "interact/pick.hpp"
+#include "interact/tool.hpp"
+
+namespace s4d {
+
+class GrabTool final : public Tool {
+ public:
+  const char* name() const override { return "Touch"; }
+  std::string help() const override;
+  bool press(const ToolInput& in, Session& s) override;
+  void drag(const ToolInput& in, Session& s) override;
+  void release(const ToolInput& in, Session& s) override;
+  void hover(const ToolInput& in, Session& s) override;
+  bool right_click(const ToolInput& in, Session& s) override;
+  bool key(ToolKey k, const ToolInput& in, Session& s) override;
+  bool wheel(double steps, const ToolInput& in, Session& s) override;
+  void overlay(Overlay& o, const Session& s) const override;
+
+  // The sheets under the cursor at the last hover, and the one a press would take.
+  const std::vector<SheetHit>& hits() const { return hits_; }
+  int sheet() const { return sheet_; }
+
+ private:
+  // The world vertex of hit h, or -1.
+  static int world_vertex(const SheetHit& h, const Session& s);
+  void toggle_pin_under_cursor(Session& s);
+
+  std::vector<SheetHit> hits_;
+  int sheet_ = 0;
+  Vec2 tab_cursor_ = Vec2::Constant(-1e9);  // where Tab was last pressed
+  bool holding_ = false;
+  bool along_w_ = false;
+  Vec3 plane_point_ = Vec3::Zero();  // the drag plane passes through it, facing the eye
+  Vec3 hand_ = Vec3::Zero();
+};
+
+}  // namespace s4d

@@ -1,0 +1,638 @@
+// The live simulation: [SECTION] commands (UI side), [SECTION] core (the World's owner),
+// [SECTION] physics thread (async), [SECTION] haptic scene (the tick: hand, band, felt force).
+#include "interact/live_simulation.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+
+#include "core/error.hpp"
+#include "haptics/spsc_queue.hpp"
+#include "haptics/triple_buffer.hpp"
+#include "scenario/script_driver.hpp"
+#include "scenario/world_builder.hpp"
+
+namespace s4d {
+
+// [SECTION] commands
+namespace {
+
+constexpr const char* kIntegrators[] = {"symplectic-euler", "paper-euler"};
+
+int integrator_code(const std::string& name) {
+  const Integrator i = parse_integrator(name);
+  return i == Integrator::kPaperEuler ? 1 : 0;
+}
+
+}  // namespace
+
+SceneCommand live_command(LiveCode code, int i0, int i1) {
+  SceneCommand c;
+  c.code = static_cast<int>(code);
+  c.i[0] = i0;
+  c.i[1] = i1;
+  return c;
+}
+
+SceneCommand live_time_scale(double scale) {
+  SceneCommand c = live_command(LiveCode::kTimeScale);
+  c.x[0] = scale;
+  return c;
+}
+
+SceneCommand live_settings(const PhysicsSettings& s) {
+  SceneCommand c = live_command(LiveCode::kSettings, integrator_code(s.integrator));
+  const double v[] = {s.time_step, s.thickness, s.gravity[0], s.gravity[1], s.gravity[2], s.gravity[3],
+                      s.mass, s.stiffness, s.shear_scale, s.bending_scale, s.beta, s.damping,
+                      s.spring_damping, s.friction, s.max_step_motion, s.collisions ? 1.0 : 0.0};
+  std::copy(std::begin(v), std::end(v), c.x);
+  return c;
+}
+
+SceneCommand live_grab(int vertex, int mode, const Vec3& hand) {
+  SceneCommand c = live_command(LiveCode::kGrab, vertex, mode);
+  for (int k = 0; k < 3; ++k) c.x[k] = hand[k];
+  return c;
+}
+
+SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode) {
+  SceneCommand c = live_command(LiveCode::kGrabNearest, 0, mode);
+  for (int k = 0; k < 3; ++k) c.x[k] = point[k];
+  c.x[3] = radius;
+  return c;
+}
+
+SceneCommand live_frame(const Frame<4>& frame) {
+  SceneCommand c = live_command(LiveCode::kFrame);
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) c.x[4 * r + k] = frame.matrix()(r, k);
+  return c;
+}
+
+SceneCommand live_mapping(const DeviceMapping& m) {
+  SceneCommand c = live_command(LiveCode::kMapping);
+  for (int k = 0; k < 3; ++k) c.x[k] = m.centre[k];
+  for (int r = 0; r < 3; ++r)
+    for (int k = 0; k < 3; ++k) c.x[3 + 3 * r + k] = m.axes(r, k);
+  c.x[12] = m.metres_per_unit;
+  for (int k = 0; k < 3; ++k) c.x[13 + k] = m.workspace_centre[k];
+  return c;
+}
+
+namespace {
+
+PhysicsSettings settings_of(const SceneCommand& c) {
+  PhysicsSettings s;
+  s.time_step = c.x[0];
+  s.thickness = c.x[1];
+  s.gravity = Vec4(c.x[2], c.x[3], c.x[4], c.x[5]);
+  s.mass = c.x[6];
+  s.stiffness = c.x[7];
+  s.shear_scale = c.x[8];
+  s.bending_scale = c.x[9];
+  s.beta = c.x[10];
+  s.damping = c.x[11];
+  s.spring_damping = c.x[12];
+  s.friction = c.x[13];
+  s.max_step_motion = c.x[14];
+  s.collisions = c.x[15] != 0;
+  s.integrator = kIntegrators[std::clamp(c.i[0], 0, 1)];
+  return s;
+}
+
+bool finite_command(const SceneCommand& c) {
+  for (double v : c.x)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+void set_message(SceneStatus& s, const std::string& text) {
+  std::snprintf(s.message, sizeof s.message, "%s", text.c_str());
+}
+
+// The hand's pull on the held vertex, evaluated where the vertex is now by whichever thread steps
+// the World (so the spring is stable whatever the threads' timing). It acts in view coordinates:
+// in the shadow (the paper's 3D external force: w stays free) or, along w, holding the shadow.
+template <int D>
+struct Hand {
+  int vertex = -1;
+  Mat<D> frame = Mat<D>::Identity();    // view axes in world coordinates (columns)
+  Vec<D> target = Vec<D>::Zero();       // view coordinates
+  Vec<D> target_v = Vec<D>::Zero();     // view coordinates, per s
+  Vec<D> weight = Vec<D>::Ones();       // 1 on the view axes the band pulls along
+  double k = 0, b = 0, max_force = 0;
+};
+
+// The band's force on the vertex at world position x, velocity v, in world coordinates.
+template <int D>
+Vec<D> band_force(const Hand<D>& h, const Vec<D>& x, const Vec<D>& v) {
+  const Vec<D> q = h.frame.transpose() * x, qv = h.frame.transpose() * v;
+  Vec<D> f = (h.k * (h.target - q) - h.b * (qv - h.target_v)).cwiseProduct(h.weight);
+  const double n = f.norm();
+  if (!std::isfinite(n)) return Vec<D>::Zero();
+  if (n > h.max_force) f *= h.max_force / n;
+  return h.frame * f;
+}
+
+// What the owner of the World publishes for the haptic side and the snapshots.
+template <int D>
+struct LiveState {
+  std::vector<Vec<D>> x, v;          // nv each
+  std::vector<std::uint8_t> pinned;  // nv
+  SceneStatus status;
+};
+
+}  // namespace
+
+// [SECTION] core
+namespace {
+
+template <int D>
+class Core {
+ public:
+  Core(const Scene& scene, const Scenario* scenario, bool playing)
+      : start_(scene), settings_(scene.physics), world_(build_world<D>(scene)), playing_(playing) {
+    if (scenario) scenario_ = *scenario;
+    status_.simulating = true;
+  }
+
+  const World<D>& world() const { return world_.world; }
+  int vertex_count() const { return world_.world.vertex_count(); }
+  double time_step() const { return world_.world.model().params.time_step; }
+
+  void set_hand(const Hand<D>& h) {
+    if (hand_.vertex >= 0 && hand_.vertex != h.vertex) world_.world.set_external_force(hand_.vertex, Vec<D>::Zero());
+    hand_ = h;
+  }
+
+  // Sim-level requests; the rest (grab, frame, mapping) are the haptic side's.
+  void command(const SceneCommand& c) {
+    World<D>& w = world_.world;
+    const int nv = w.vertex_count();
+    const int v = c.i[0];
+    switch (static_cast<LiveCode>(c.code)) {
+      case LiveCode::kPlay: playing_ = true; break;
+      case LiveCode::kPause: playing_ = false; break;
+      case LiveCode::kStepOnce: single_steps_ += 1; break;
+      case LiveCode::kReset: restart(false); break;
+      case LiveCode::kPlayScript: restart(true); break;
+      case LiveCode::kStopScript:
+        if (script_) script_->release(w);
+        script_.reset();
+        break;
+      case LiveCode::kTimeScale:
+        if (std::isfinite(c.x[0])) time_scale_ = std::clamp(c.x[0], 0.01, 4.0);
+        break;
+      case LiveCode::kPin:
+      case LiveCode::kUnpin:
+      case LiveCode::kTogglePin: {
+        if (v < 0 || v >= nv) break;
+        const bool pin = static_cast<LiveCode>(c.code) == LiveCode::kPin ||
+                         (static_cast<LiveCode>(c.code) == LiveCode::kTogglePin && !w.is_pinned(v));
+        if (pin) w.pin(v);
+        else w.unpin(v);
+        break;
+      }
+      case LiveCode::kClearPins:
+        for (int i = 0; i < nv; ++i) w.unpin(i);
+        break;
+      case LiveCode::kSettings:
+        if (!finite_command(c)) {
+          set_message(status_, "physics settings refused: a value is not finite");
+          break;
+        }
+        try {
+          const PhysicsSettings s = settings_of(c);
+          world_.apply_settings(s);
+          settings_ = s;
+          ++status_.settings_revision;
+          status_.message[0] = 0;
+        } catch (const std::exception& e) {
+          set_message(status_, e.what());
+        }
+        break;
+      default: break;
+    }
+  }
+
+  // Adds dt of haptic time (s) to what the simulation owes; at most 0.1 s is owed (beyond it
+  // the simulation runs in slow motion rather than racing to catch up).
+  void owe(double dt) {
+    if (playing_) owed_ = std::min(owed_ + dt * time_scale_, 0.1);
+  }
+  // One World step when one is owed (or a single step was asked for). True when it stepped.
+  bool step_if_owed() {
+    const double ts = time_step();
+    const bool owed = playing_ && owed_ >= ts * (1 - 1e-6);  // sums of ticks round a little
+    if (!owed && single_steps_ == 0) return false;
+    if (owed) owed_ = std::max(0.0, owed_ - ts);
+    else --single_steps_;
+    World<D>& w = world_.world;
+    if (hand_.vertex >= 0 && hand_.vertex < w.vertex_count())
+      w.set_external_force(hand_.vertex, band_force(hand_, w.positions()[hand_.vertex], w.velocities()[hand_.vertex]));
+    if (script_) script_->apply(w, (w.data().steps + 1) * ts);
+    w.step();
+    return true;
+  }
+  double owed() const { return owed_; }
+
+  const SceneStatus& status() {
+    const Data<D>& d = world_.world.data();
+    status_.sim_time = d.time;
+    status_.sim_steps = d.steps;
+    status_.playing = playing_;
+    status_.script_running = script_.has_value();
+    status_.script_time = script_ ? d.time : 0;
+    status_.contacts = d.last_contacts;
+    status_.rollbacks = d.warnings.rollbacks;
+    status_.ccd_freezes = d.warnings.ccd_freezes;
+    status_.global_freezes = d.warnings.global_freezes;
+    status_.rejected_inputs = d.warnings.rejected_inputs;
+    status_.lag = owed_;
+    int pins = 0;
+    for (std::uint8_t p : d.pinned) pins += p != 0;
+    status_.pinned = pins;
+    return status_;
+  }
+
+  void publish(LiveState<D>& s) {
+    const World<D>& w = world_.world;
+    s.x.assign(w.positions().begin(), w.positions().end());
+    s.v.assign(w.velocities().begin(), w.velocities().end());
+    s.pinned.assign(w.data().pinned.begin(), w.data().pinned.end());
+    s.status = status();
+  }
+
+ private:
+  // Back to the start (rebuilt with the settings in force), with the script when asked.
+  void restart(bool with_script) {
+    Scene s = start_;
+    s.physics = settings_;
+    try {
+      SceneWorld<D> fresh = build_world<D>(s);
+      world_ = std::move(fresh);
+    } catch (const std::exception& e) {
+      set_message(status_, e.what());
+      return;
+    }
+    hand_ = Hand<D>{};
+    owed_ = 0;
+    script_.reset();
+    if (with_script && scenario_) {
+      try {
+        script_.emplace(*scenario_, world_);
+      } catch (const std::exception& e) {
+        set_message(status_, e.what());
+      }
+      playing_ = true;
+    }
+  }
+
+  Scene start_;
+  PhysicsSettings settings_;
+  std::optional<Scenario> scenario_;
+  SceneWorld<D> world_;
+  std::optional<ScriptDriver<D>> script_;
+  Hand<D> hand_;
+  bool playing_ = true;
+  double time_scale_ = 1;
+  double owed_ = 0;  // s of simulated time the clock calls for
+  int single_steps_ = 0;
+  SceneStatus status_;
+};
+
+}  // namespace
+
+// [SECTION] physics thread
+namespace {
+
+// Runs a Core on its own thread: commands and the hand come in lock-free, the state goes out
+// through a triple buffer, and the haptic clock it follows is an atomic count of nanoseconds.
+template <int D>
+class PhysicsThread {
+ public:
+  explicit PhysicsThread(std::unique_ptr<Core<D>> core) : core_(std::move(core)), state_(first_state(*core_)) {
+    thread_ = std::thread([this] { run(); });
+  }
+  ~PhysicsThread() {
+    stop_.store(true);
+    thread_.join();
+  }
+  void command(const SceneCommand& c) {
+    if (!commands_.try_push(c)) dropped_.fetch_add(1, std::memory_order_relaxed);
+  }
+  void set_hand(const Hand<D>& h) { hand_.write(h); }
+  void advance_clock(double dt) { clock_ns_.fetch_add(static_cast<std::uint64_t>(std::llround(dt * 1e9)), std::memory_order_release); }
+  const LiveState<D>& state() { return state_.read(); }
+
+ private:
+  static LiveState<D> first_state(Core<D>& core) {
+    LiveState<D> s;
+    core.publish(s);
+    return s;
+  }
+  void run() {
+    std::uint64_t last = 0;  // the clock's start, whatever ticks ran before this thread did
+    while (!stop_.load(std::memory_order_relaxed)) {
+      bool changed = false;
+      while (auto c = commands_.try_pop()) {
+        core_->command(*c);
+        changed = true;
+      }
+      core_->set_hand(hand_.read());
+      const std::uint64_t now = clock_ns_.load(std::memory_order_acquire);
+      core_->owe(static_cast<double>(now - last) * 1e-9);
+      last = now;
+      changed = core_->step_if_owed() || changed;
+      if (changed) {
+        core_->publish(state_.back());
+        state_.publish();
+      } else {
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+    }
+  }
+
+  std::unique_ptr<Core<D>> core_;
+  SpscQueue<SceneCommand, 64> commands_;
+  TripleBuffer<Hand<D>> hand_;
+  TripleBuffer<LiveState<D>> state_;
+  std::atomic<std::uint64_t> clock_ns_{0};
+  std::atomic<std::uint64_t> dropped_{0};
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace
+
+// [SECTION] haptic scene
+namespace {
+
+template <int D>
+class LiveSimulation final : public HapticScene {
+ public:
+  LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
+      : options_(o), mapping_(o.mapping), frame4_(o.frame) {
+    auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing);
+    nv_ = core->vertex_count();
+    if (o.async_physics) {
+      thread_ = std::make_unique<PhysicsThread<D>>(std::move(core));
+      current_ = &thread_->state();  // before the loop thread starts: it becomes the one reader
+    } else {
+      core_ = std::move(core);
+    }
+    params_[kBandStiffness] = {"K", 100, 0, 2000, "N per scene unit"};
+    params_[kBandDamping] = {"B", 0.5, 0, 20, "N s per scene unit"};
+    params_[kBandMaxForce] = {"max force", 2, 0.01, 50, "N on the vertex"};
+    params_[kForceScale] = {"force scale", 1, 0, 10, "device N per vertex N"};
+  }
+
+  std::string_view name() const override { return "live-simulation"; }
+  std::span<SceneParam> params() override { return params_; }
+  int point_count() const override { return nv_; }
+  int point_dimension() const override { return D; }
+
+  void reset() override { command(live_command(LiveCode::kReset)); }
+
+  void command(const SceneCommand& c) override {
+    switch (static_cast<LiveCode>(c.code)) {
+      case LiveCode::kGrab:
+        if (c.i[0] >= 0 && c.i[0] < nv_ && finite_command(c)) grab(c.i[0], c.i[1]);
+        return;
+      case LiveCode::kGrabNearest:
+        if (finite_command(c)) {
+          const int v = nearest(Vec3(c.x[0], c.x[1], c.x[2]), c.x[3]);
+          if (v >= 0) grab(v, c.i[1]);
+        }
+        return;
+      case LiveCode::kRelease:
+        held_ = -1;
+        return;
+      case LiveCode::kGrabMode:
+        if (held_ >= 0) grab(held_, c.i[1]);
+        return;
+      case LiveCode::kFrame:
+        if (finite_command(c)) {
+          Mat<4> r;
+          for (int i = 0; i < 16; ++i) r(i / 4, i % 4) = c.x[i];
+          frame4_ = Frame<4>(r);
+          if (held_ >= 0) grab(held_, mode_);  // keep holding where the vertex is now
+        }
+        return;
+      case LiveCode::kMapping:
+        if (finite_command(c) && c.x[12] > 0) {
+          DeviceMapping m;
+          for (int k = 0; k < 3; ++k) m.centre[k] = c.x[k];
+          for (int r = 0; r < 3; ++r)
+            for (int k = 0; k < 3; ++k) m.axes(r, k) = c.x[3 + 3 * r + k];
+          m.metres_per_unit = c.x[12];
+          for (int k = 0; k < 3; ++k) m.workspace_centre[k] = c.x[13 + k];
+          mapping_ = m;
+          if (held_ >= 0) grab(held_, mode_);
+        }
+        return;
+      case LiveCode::kReset:
+      case LiveCode::kPlayScript:
+        held_ = -1;
+        break;
+      default: break;
+    }
+    if (core_) core_->command(c);
+    else thread_->command(c);
+  }
+
+  ToolOutput step(const DeviceState& device, double dt) override {
+    device_ = device;
+    const bool button = device.buttons & 1u;
+    if (thread_) current_ = &thread_->state();  // one consistent state for the whole tick
+    if (button && !button_ && held_ < 0) {
+      // A device's button grabs the vertex nearest its point in the shadow (the mouse path sends
+      // kGrab with the vertex under the cursor instead).
+      const int v = nearest(mapping_.to_shadow(device.position), kGrabReach / mapping_.metres_per_unit);
+      if (v >= 0) grab(v, (device.buttons & 2u) ? 1 : 0);
+      grabbed_by_button_ = held_ >= 0;
+    }
+    if (!button && button_ && grabbed_by_button_) {
+      held_ = -1;
+      grabbed_by_button_ = false;
+    }
+    button_ = button;
+
+    const Hand<D> hand = make_hand();
+    ToolOutput out;
+    out.anchor = device.position;
+    if (core_) {
+      core_->set_hand(hand);
+      core_->owe(dt);
+      for (int s = 0; s < options_.max_steps_per_tick && core_->step_if_owed(); ++s) {
+      }
+    } else {
+      thread_->set_hand(hand);
+      thread_->advance_clock(dt);
+    }
+    const auto x = positions();
+    const auto v = velocities();
+    if (held_ >= 0 && held_ < static_cast<int>(x.size())) {
+      const Vec<D> f = band_force(hand, x[held_], v[held_]);  // on the vertex, world
+      out.force = felt(f);
+      out.anchor = mapping_.to_device(shadow(x[held_]));
+      out.engaged = true;
+      band_force_ = f.norm();
+    } else {
+      band_force_ = 0;
+    }
+    return out;
+  }
+
+  // The loop publishes points, then flags, then status: the points take the physics thread's
+  // newest state and the other two read the same one.
+  void copy_points(std::span<double> out) const override {
+    if (thread_) current_ = &thread_->state();
+    const auto x = positions();
+    const std::size_t n = std::min(x.size(), out.size() / D);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < D; ++k) out[i * D + k] = x[i][k];
+  }
+  void copy_flags(std::span<std::uint8_t> out) const override {
+    const auto p = pinned();
+    const std::size_t n = std::min(p.size(), out.size());
+    for (std::size_t i = 0; i < n; ++i) out[i] = p[i] ? 1 : 0;
+  }
+  void copy_status(SceneStatus& out) const override {
+    out = core_ ? core_->status() : current_->status;
+    out.held_vertex = held_;
+    out.grab_mode = mode_;
+    const auto x = positions();
+    if (held_ >= 0 && held_ < static_cast<int>(x.size())) {
+      out.band_to = shadow(x[held_]);
+      out.band_from = hand_shadow();
+    }
+    out.band_force = band_force_;
+  }
+
+ private:
+  std::span<const Vec<D>> positions() const {
+    if (core_) return core_->world().positions();
+    return thread_state().x;
+  }
+  std::span<const Vec<D>> velocities() const {
+    if (core_) return core_->world().velocities();
+    return thread_state().v;
+  }
+  std::span<const std::uint8_t> pinned() const {
+    if (core_) return core_->world().data().pinned;
+    return thread_state().pinned;
+  }
+  // The physics thread's state as read at the start of this tick: it stays unchanged until the
+  // next read on this (the loop's) thread, TripleBuffer's promise.
+  const LiveState<D>& thread_state() const { return *current_; }
+
+  // View coordinates of a world point: R^4 through the frame; R^3 objects are seen as they are.
+  Vec<D> to_view(const Vec<D>& p) const {
+    if constexpr (D == 4) return frame4_.to_view(p);
+    else return p;
+  }
+  Vec<D> to_world(const Vec<D>& q) const {
+    if constexpr (D == 4) return frame4_.to_world(q);
+    else return q;
+  }
+  Vec3 shadow(const Vec<D>& p) const { return to_view(p).template head<3>(); }
+
+  Vec3 hand_shadow() const { return mapping_.to_shadow(device_.position) + offset_; }
+
+  int nearest(const Vec3& point, double radius) const {
+    const auto x = positions();
+    int best = -1;
+    double best_d2 = radius * radius;
+    for (int v = 0; v < static_cast<int>(x.size()); ++v) {
+      const double d2 = (shadow(x[v]) - point).squaredNorm();
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = v;
+      }
+    }
+    return best;
+  }
+
+  // Holds vertex v from where the hand is now: the band starts slack (no jump on grabbing).
+  void grab(int v, int mode) {
+    const auto x = positions();
+    if (v < 0 || v >= static_cast<int>(x.size())) return;
+    held_ = v;
+    mode_ = mode == 1 ? 1 : 0;
+    const Vec<D> q = to_view(x[v]);
+    offset_ = q.template head<3>() - mapping_.to_shadow(device_.position);
+    grab_view_ = q;
+    grab_device_ = device_.position;
+  }
+
+  Hand<D> make_hand() const {
+    Hand<D> h;
+    if (held_ < 0) return h;
+    h.vertex = held_;
+    h.k = params_[kBandStiffness].value;
+    h.b = params_[kBandDamping].value;
+    h.max_force = params_[kBandMaxForce].value;
+    if constexpr (D == 4) h.frame = frame4_.matrix();
+    h.target = grab_view_;
+    if (mode_ == 1 && D == 4) {
+      // Along the shadow ray: the device's motion along its y axis moves w; the shadow holds.
+      h.target[D - 1] = grab_view_[D - 1] + (device_.position - grab_device_).y() / mapping_.metres_per_unit;
+      h.target_v[D - 1] = device_.velocity.y() / mapping_.metres_per_unit;
+    } else {
+      h.target.template head<3>() = hand_shadow();
+      h.target_v.template head<3>() = mapping_.vector_to_shadow(device_.velocity);
+      if constexpr (D == 4) h.weight[D - 1] = 0;  // a 3D hand pulls in the shadow; w stays free
+    }
+    if (!h.target.allFinite() || !h.target_v.allFinite()) h.vertex = -1;
+    return h;
+  }
+
+  // The band's reaction as the device renders it: the shadow part along the device's axes, the w
+  // part (along-w mode) along its y axis; scaled, and never stiffer than the device can render.
+  Vec3 felt(const Vec<D>& on_vertex) const {
+    const Vec<D> q = to_view(-on_vertex);
+    Vec3 f = mapping_.axes.transpose() * Vec3(q.template head<3>());
+    if (mode_ == 1 && D == 4) f = Vec3(0, q[D - 1], 0);
+    const double k = std::max(params_[kBandStiffness].value, 1e-9);
+    const double stiffness_cap = kMaxFeltStiffness * mapping_.metres_per_unit / k;
+    const double scale = std::min(params_[kForceScale].value, stiffness_cap);
+    f *= scale;
+    return f.allFinite() ? f : Vec3::Zero();
+  }
+
+  static constexpr double kMaxFeltStiffness = 800;  // N/m: what a desktop arm renders stably
+  static constexpr double kGrabReach = 0.01;         // m: how near a device's point grabs a vertex
+
+  LiveOptions options_;
+  std::unique_ptr<Core<D>> core_;
+  std::unique_ptr<PhysicsThread<D>> thread_;
+  mutable const LiveState<D>* current_ = nullptr;  // async: the state of this tick (loop thread)
+  std::array<SceneParam, kLiveParamCount> params_;
+  DeviceMapping mapping_;
+  Frame<4> frame4_;
+  DeviceState device_;
+  int nv_ = 0;
+  int held_ = -1, mode_ = 0;
+  Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
+  Vec<D> grab_view_ = Vec<D>::Zero();
+  Vec3 grab_device_ = Vec3::Zero();
+  bool button_ = false, grabbed_by_button_ = false;
+  double band_force_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<HapticScene> make_live_simulation(const Scene& scene, const Scenario* scenario,
+                                                  const LiveOptions& options) {
+  const int dim = simulation_dimension(scene);
+  if (dim == 0) throw Error("nothing to simulate: the scene has no surface");
+  if (dim == 3) return std::make_unique<LiveSimulation<3>>(scene, scenario, options);
+  return std::make_unique<LiveSimulation<4>>(scene, scenario, options);
+}
+
+}  // namespace s4d

@@ -1,0 +1,68 @@
+// LiveSimulation: the scene's surfaces as one World<D>, run by the haptic loop as its scene —
+// the rubber band from the hand to a held vertex (paper 5.1.4), pins, play / pause / step,
+// live physics settings and the scenario's script. The loop thread owns it; the UI reaches it
+// only through SceneCommands (live_commands below) and reads the loop's snapshots.
+//
+// With `async_physics` the World steps on a thread of its own that follows the haptic clock, so
+// a slow step (a cloth folded onto itself) never stalls the 1 kHz loop: the band then reads the
+// latest published state and the simulation falls behind real time instead of the loop.
+#pragma once
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "haptics/haptic_scene.hpp"
+#include "interact/device_mapping.hpp"
+#include "io/scene.hpp"
+#include "scenario/scenario.hpp"
+
+namespace s4d {
+
+// SceneCommand codes of the live simulation; build them with the live_* functions.
+enum class LiveCode : int {
+  kPlay = 1,
+  kPause,
+  kStepOnce,   // one time_step, also while paused
+  kReset,      // back to the start: positions, velocities, pins, script, time
+  kTimeScale,  // x0: simulated seconds per second, in [0.01, 4]
+  kSettings,   // x: PhysicsSettings (see live_settings)
+  kPin,        // i0: vertex, pinned where it is
+  kUnpin,      // i0: vertex
+  kTogglePin,  // i0: vertex
+  kClearPins,
+  kGrab,         // i0: vertex, i1: mode (0 shadow, 1 along w); x0..x2: the hand's point in shadow space
+  kGrabNearest,  // x0..x2: shadow point, x3: radius (scene units); i1: mode — the device's button
+  kRelease,
+  kGrabMode,     // i1: mode, re-anchored where the hand and the vertex are now
+  kFrame,        // x0..x15: the 4D view frame, row-major (R^3 worlds ignore it)
+  kMapping,      // x0..2 centre, x3..11 axes (row-major), x12 metres per unit, x13..15 workspace centre
+  kPlayScript,   // restart from the start with the scenario's script
+  kStopScript,   // let go of what the script holds, keep the state
+};
+
+SceneCommand live_command(LiveCode code, int i0 = 0, int i1 = 0);
+SceneCommand live_time_scale(double scale);
+SceneCommand live_settings(const PhysicsSettings& settings);
+SceneCommand live_grab(int vertex, int mode, const Vec3& hand);
+SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode);
+SceneCommand live_frame(const Frame<4>& frame);
+SceneCommand live_mapping(const DeviceMapping& mapping);
+
+struct LiveOptions {
+  bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
+  bool start_playing = true;
+  DeviceMapping mapping;       // until a kMapping command arrives
+  Frame<4> frame;              // until a kFrame command arrives
+  int max_steps_per_tick = 4;  // inline: the most World steps one tick may run (the rest is lag)
+};
+
+// The scene's parameters (HapticScene::params), settable from the Haptics panel and commands.
+enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kLiveParamCount };
+
+// Builds the World of the scene's surfaces (scenario/world_builder). `scenario`, when given,
+// supplies the script kPlayScript plays. Throws s4d::Error with the reason the scene cannot be
+// simulated (no surface, a surface already meeting itself, bad parameters).
+std::unique_ptr<HapticScene> make_live_simulation(const Scene& scene, const Scenario* scenario,
+                                                  const LiveOptions& options);
+
+}  // namespace s4d

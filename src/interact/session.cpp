@@ -1,0 +1,213 @@
+// Session: opening documents, starting the loop with the live simulation, and the UI-side
+// refresh of positions, rates and checks.
+#include "interact/session.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+#include "core/error.hpp"
+#include "haptics/device_spec.hpp"
+#include "haptics/mouse_device.hpp"
+#include "scenario/world_builder.hpp"
+
+namespace s4d {
+
+namespace {
+
+// The window's mouse: a proxy in a cube large enough that the view's whole ball fits in depth.
+std::unique_ptr<Device> open_device(const std::string& spec) {
+  const DeviceSpec d = parse_device_spec(spec);
+  if (d.kind == DeviceSpec::Kind::mouse) {
+    MouseProxyConfig c;
+    c.half_extent = Vec3::Constant(0.1);
+    return std::make_unique<MouseDevice>(c);
+  }
+  return make_device(d);
+}
+
+}  // namespace
+
+Document load_document(const std::string& spec) {
+  Document d;
+  d.spec = spec;
+  d.scene = load_scene_or_object(spec);
+  if (is_scenario(d.scene)) d.scenario = scenario_of_scene(d.scene, spec);
+  return d;
+}
+
+Session::~Session() { close(); }
+
+void Session::close() {
+  if (loop_) loop_->stop();
+  loop_.reset();
+  monitor_.reset();
+  snapshot_ = nullptr;
+}
+
+void Session::open(Document doc, const SessionOptions& options) {
+  close();
+  doc_ = std::move(doc);
+  options_ = options;
+  start();
+}
+
+void Session::rebuild() {
+  close();
+  start();
+}
+
+void Session::start() {
+  physics_error_.clear();
+  device_error_.clear();
+  rates_ = {};
+  dim_ = simulation_dimension(doc_.scene);
+  body_vertex_ranges(doc_.scene, first_, count_);
+  if (dim_ == 0) return;  // curves only: nothing to simulate
+  std::unique_ptr<HapticScene> live;
+  try {
+    LiveOptions lo;
+    lo.async_physics = options_.async_physics;
+    lo.start_playing = options_.start_playing;
+    lo.frame = doc_.scene.frame;
+    const Scenario* sc = doc_.scenario ? &*doc_.scenario : nullptr;
+    live = make_live_simulation(doc_.scene, sc, lo);
+  } catch (const std::exception& e) {
+    physics_error_ = e.what();
+    return;
+  }
+  std::unique_ptr<Device> device;
+  try {
+    device = open_device(options_.device);
+  } catch (const std::exception& e) {
+    device_error_ = std::string(e.what()) + "; using the mouse";
+    options_.device = "mouse";
+    device = open_device("mouse");
+  }
+  HapticLoopConfig config;
+  config.realtime_priority = options_.realtime_priority;
+  loop_ = std::make_unique<HapticLoop>(std::move(device), std::move(live), config);
+  if (options_.threaded) loop_->start();
+
+  std::vector<Vec4> initial;
+  std::vector<Triangle> tris;
+  for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
+    if (first_[o] < 0) continue;
+    std::visit([&](const auto& s) {
+      using T = std::decay_t<decltype(s)>;
+      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+        for (const auto& p : s.vertices) {
+          Vec4 q = Vec4::Zero();
+          q.template head<T::kDim>() = p;
+          initial.push_back(q);
+        }
+        for (const Triangle& t : s.triangles)
+          if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+            tris.push_back({t[0] + first_[o], t[1] + first_[o], t[2] + first_[o]});
+      }
+    }, doc_.scene.objects[o].shape);
+  }
+  monitor_ = std::make_unique<SessionMonitor>(std::move(tris), dim_, 2 * doc_.scene.physics.thickness,
+                                              doc_.scenario ? &*doc_.scenario : nullptr, first_, count_,
+                                              std::move(initial));
+  rate_wall_ = std::chrono::steady_clock::now();
+  last_submit_ = rate_wall_;
+}
+
+void Session::refresh() {
+  if (!loop_) {
+    snapshot_ = nullptr;
+    return;
+  }
+  const HapticSnapshot& snap = loop_->snapshot();
+  snapshot_ = &snap;
+  const int d = snap.point_dimension;
+  for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
+    if (first_[o] < 0) continue;
+    SceneObject& obj = doc_.scene.objects[o];
+    if (d == 4) {
+      if (const auto* s3 = std::get_if<Surface<3>>(&obj.shape)) obj.shape = lift_to_4d(*s3);
+    }
+    std::visit([&](auto& s) {
+      using T = std::decay_t<decltype(s)>;
+      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+        constexpr int E = T::kDim;
+        const int n = std::min<int>(static_cast<int>(s.vertices.size()), count_[o]);
+        for (int i = 0; i < n; ++i) {
+          const std::size_t at = static_cast<std::size_t>(first_[o] + i) * static_cast<std::size_t>(d);
+          if (at + static_cast<std::size_t>(d) > snap.points.size()) break;
+          for (int k = 0; k < std::min(E, d); ++k) s.vertices[i][k] = snap.points[at + static_cast<std::size_t>(k)];
+        }
+      }
+    }, obj.shape);
+  }
+  const auto now = std::chrono::steady_clock::now();
+  const double wall = std::chrono::duration<double>(now - rate_wall_).count();
+  if (wall >= 1.0) {
+    rates_.real_time_ratio = (snap.status.sim_time - rate_sim_time_) / wall;
+    rates_.steps_per_second = static_cast<double>(snap.status.sim_steps - rate_steps_) / wall;
+    rate_wall_ = now;
+    rate_sim_time_ = snap.status.sim_time;
+    rate_steps_ = snap.status.sim_steps;
+  }
+  if (monitor_ && std::chrono::duration<double>(now - last_submit_).count() >= 0.2) {
+    monitor_->submit(snap.points, snap.status.sim_time);
+    last_submit_ = now;
+  }
+}
+
+MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }
+
+bool Session::send(const SceneCommand& cmd) { return loop_ && loop_->send(cmd); }
+
+void Session::set_device(const std::string& spec) {
+  auto device = open_device(spec);  // throws with the reason
+  if (loop_) loop_->replace_device(std::move(device));
+  options_.device = spec;
+  device_error_.clear();
+}
+
+void Session::set_mapping(const DeviceMapping& m) {
+  if (held()) return;
+  mapping_ = m;
+  send(live_mapping(m));
+}
+
+void Session::set_hand(const Vec3& p, bool pressed) {
+  if (loop_ && p.allFinite()) loop_->set_pointer(mapping_.to_device(p), pressed ? 1u : 0u);
+}
+
+Vec3 Session::vertex_shadow(int v) const {
+  const int o = object_of_vertex(v);
+  if (o < 0) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  const int local = v - first_[static_cast<std::size_t>(o)];
+  return std::visit([&](const auto& s) -> Vec3 {
+    using T = std::decay_t<decltype(s)>;
+    if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+      if (local >= static_cast<int>(s.vertices.size())) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+      if constexpr (T::kDim == 4) return doc_.scene.frame.shadow(s.vertices[local]);
+      else return s.vertices[local];
+    }
+    return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  }, doc_.scene.objects[static_cast<std::size_t>(o)].shape);
+}
+
+int Session::first_vertex(int object) const {
+  return object >= 0 && object < static_cast<int>(first_.size()) ? first_[static_cast<std::size_t>(object)] : -1;
+}
+
+int Session::vertex_count(int object) const {
+  return object >= 0 && object < static_cast<int>(count_.size()) ? count_[static_cast<std::size_t>(object)] : 0;
+}
+
+int Session::object_of_vertex(int v) const {
+  for (std::size_t o = 0; o < first_.size(); ++o)
+    if (first_[o] >= 0 && v >= first_[o] && v < first_[o] + count_[o]) return static_cast<int>(o);
+  return -1;
+}
+
+bool Session::pinned(int v) const {
+  return snapshot_ && v >= 0 && v < static_cast<int>(snapshot_->flags.size()) && (snapshot_->flags[static_cast<std::size_t>(v)] & 1);
+}
+
+}  // namespace s4d

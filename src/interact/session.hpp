@@ -1,0 +1,118 @@
+// Session: what the window (and the headless tests) work on — the document (a scene, or a
+// scenario's scene with its script and verdict), its live simulation run by the haptic loop,
+// and the monitor's independent checks. The UI thread owns the Session; the loop thread owns
+// the World; they meet only in SceneCommands and snapshots (see DESIGN.md "Interaction").
+#pragma once
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "haptics/haptic_loop.hpp"
+#include "interact/live_simulation.hpp"
+#include "interact/session_monitor.hpp"
+#include "io/scene.hpp"
+#include "scenario/scenario.hpp"
+
+namespace s4d {
+
+struct SessionOptions {
+  std::string device = "mouse";  // the haptic loop's device (--device): mouse, sim, replay:FILE, ...
+  bool threaded = true;          // run the loop's thread; false: the caller steps it (run_ticks)
+  bool async_physics = true;     // step the World on its own thread (see live_simulation.hpp)
+  bool start_playing = true;
+  bool realtime_priority = true;
+};
+
+// A document read from what a user opens: a scene, a scenario, a mesh, a curve or a generator.
+struct Document {
+  Scene scene;
+  std::optional<Scenario> scenario;
+  std::string spec;  // what was opened
+};
+// Throws s4d::Error / ParseError with the reason; nothing is changed then.
+Document load_document(const std::string& spec);
+
+// Timings the window shows, measured over the last second of snapshots.
+struct SimulationRates {
+  double steps_per_second = 0;
+  double real_time_ratio = 0;  // simulated seconds per wall second
+};
+
+class Session {
+ public:
+  Session() = default;
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  // Takes the document and starts simulating its surfaces. A scene whose physics cannot run
+  // stays viewable: physics_error() says why and nothing simulates. A device that cannot be
+  // opened falls back to the mouse, with the reason in device_error().
+  void open(Document doc, const SessionOptions& options);
+  // Starts the simulation again from the scene's current shapes (after objects were added or
+  // removed); velocities are lost, the view is kept.
+  void rebuild();
+  void close();
+
+  Scene& scene() { return doc_.scene; }
+  const Scene& scene() const { return doc_.scene; }
+  const Document& document() const { return doc_; }
+  const std::optional<Scenario>& scenario() const { return doc_.scenario; }
+
+  bool simulating() const { return loop_ != nullptr; }
+  const std::string& physics_error() const { return physics_error_; }
+  const std::string& device_error() const { return device_error_; }
+  HapticLoop* loop() { return loop_.get(); }
+  int dimension() const { return dim_; }
+
+  // UI thread, once a frame: reads the loop's newest snapshot, copies its positions into the
+  // scene's objects, updates the rates and hands the state to the monitor.
+  void refresh();
+  // The snapshot of the last refresh (nullptr when not simulating).
+  const HapticSnapshot* snapshot() const { return snapshot_; }
+  SimulationRates rates() const { return rates_; }
+  MonitorResult checks() const;
+
+  // Sends a request to the live simulation (false when not simulating or the queue is full).
+  bool send(const SceneCommand& cmd);
+  // Replaces the loop's device (throws s4d::Error with the reason; the old one keeps running).
+  void set_device(const std::string& spec);
+  const std::string& device_spec() const { return options_.device; }
+
+  // The device's workspace laid onto the view (sent to the simulation; the window refits it
+  // when the view turns). Kept while a vertex is held, so the hand does not jump.
+  void set_mapping(const DeviceMapping& mapping);
+  const DeviceMapping& mapping() const { return mapping_; }
+  // The mouse's hand: a shadow point the mouse proxy follows, and whether the button is down.
+  void set_hand(const Vec3& shadow_point, bool pressed);
+
+  // World vertices of scene object o: [first_vertex(o), first_vertex(o) + vertex_count(o)).
+  int first_vertex(int object) const;
+  int vertex_count(int object) const;
+  int object_of_vertex(int vertex) const;  // -1 when none
+  bool pinned(int vertex) const;
+  // Where world vertex v is drawn (shadow space, from the last refresh); NaN when unknown.
+  Vec3 vertex_shadow(int vertex) const;
+  bool held() const { return snapshot_ && snapshot_->status.held_vertex >= 0; }
+
+ private:
+  void start();
+
+  Document doc_;
+  SessionOptions options_;
+  std::unique_ptr<HapticLoop> loop_;
+  std::unique_ptr<SessionMonitor> monitor_;
+  std::string physics_error_, device_error_;
+  std::vector<int> first_, count_;
+  int dim_ = 0;
+  const HapticSnapshot* snapshot_ = nullptr;
+  SimulationRates rates_;
+  std::chrono::steady_clock::time_point rate_wall_;
+  double rate_sim_time_ = 0;
+  std::int64_t rate_steps_ = 0;
+  std::chrono::steady_clock::time_point last_submit_;
+  DeviceMapping mapping_;
+};
+
+}  // namespace s4d

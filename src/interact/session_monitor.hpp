@@ -1,0 +1,66 @@
+// SessionMonitor: the independent checks of a live simulation, run off the UI thread on the
+// latest snapshot — true intersections (the proximity finder), the smallest gap, and the
+// scenario's verdict — so the panel can say "true intersections: 0" without dropping frames.
+#pragma once
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "scenario/scenario.hpp"
+#include "scenario/verdict.hpp"
+#include "shape/surface.hpp"
+
+namespace s4d {
+
+struct MonitorResult {
+  bool valid = false;             // false until the first check finished
+  double sim_time = 0;            // s, of the state checked
+  int true_intersections = 0;     // triangle pairs (sharing no vertex) that truly meet
+  double min_gap = 0;             // smallest gap between such pairs within `search` (inf beyond)
+  std::optional<VerdictResult> verdict;  // the scenario's, when the session has one
+  double check_ms = 0;            // wall time of the last round of checks
+  std::uint64_t rounds = 0;
+};
+
+class SessionMonitor {
+ public:
+  // triangles: the world's cells (global vertex indices); dim: 3 or 4; search: the gap range
+  // reported (2 δ); scenario: judged live when given (first/count/initial as VerdictJudge's).
+  SessionMonitor(std::vector<Triangle> triangles, int dim, double search, const Scenario* scenario,
+                 std::vector<int> first, std::vector<int> count, std::vector<Vec4> initial);
+  ~SessionMonitor();
+  SessionMonitor(const SessionMonitor&) = delete;
+  SessionMonitor& operator=(const SessionMonitor&) = delete;
+
+  // UI thread: hands over a state (nv × dim values) to check; dropped while a check runs (the
+  // next one will be newer). A time that goes back (a reset) restarts the verdict's history.
+  void submit(std::span<const double> points, double sim_time);
+  MonitorResult latest() const;
+
+ private:
+  void run();
+
+  const std::vector<Triangle> triangles_;
+  const int dim_;
+  const double search_;
+  std::optional<Scenario> scenario_;
+  std::vector<int> first_, count_;
+  std::vector<Vec4> initial_;
+  std::unique_ptr<VerdictJudge> judge_;  // worker thread only
+  double judged_time_ = -1;              // worker thread only
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::vector<double> pending_;
+  double pending_time_ = 0;
+  bool has_pending_ = false, busy_ = false, stop_ = false;
+  MonitorResult result_;
+  std::thread thread_;
+};
+
+}  // namespace s4d

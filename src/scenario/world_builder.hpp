@@ -1,0 +1,51 @@
+// The one world builder: a scene's surfaces become the bodies of one World<D> with the scene's
+// physics, used by scenario runs, the live session of the window and the benchmarks alike.
+#pragma once
+#include <span>
+#include <vector>
+
+#include "io/scene.hpp"
+#include "physics/world.hpp"
+
+namespace s4d {
+
+// The dimension a scene's surfaces are simulated in: 4 when any lies in R^4 (those of R^3 join
+// it at w = 0), 3 when all lie in R^3, 0 when the scene has no surface. Curves are not bodies.
+int simulation_dimension(const Scene& scene);
+
+// Where each scene object's vertices are in the world build_world makes: first[o] (-1 for a
+// curve) and count[o]; bodies follow the scene's order.
+void body_vertex_ranges(const Scene& scene, std::vector<int>& first, std::vector<int>& count);
+
+// The physics layer's parameters for a scene's settings (gravity truncated to D). Throws
+// s4d::Error for an unknown integrator name.
+template <int D>
+PhysicsParams<D> physics_params(const PhysicsSettings& settings);
+
+template <int D>
+struct SceneWorld {
+  World<D> world;
+  std::vector<int> first;  // per scene object: its first vertex in the world, -1 for a curve
+  std::vector<int> count;  // per scene object: its vertex count (0 for a curve)
+  std::vector<Surface<D>> bodies;  // per body, as built (grids kept): what a rebuild starts from
+  std::vector<int> body_object;    // per body, its scene object
+
+  // The object whose vertex v is, or -1.
+  int object_of_vertex(int v) const;
+  // A new model for `settings`, built around the world's current positions (so the contact
+  // layer fits the gaps of now), keeping the state, pins and the first initial positions.
+  // Throws s4d::Error like build_world; the world is unchanged then.
+  void apply_settings(const PhysicsSettings& settings);
+};
+
+// Throws s4d::Error with a sentence a user can act on: no surface, a mesh with an edge shared by
+// more than two triangles, a surface that already meets itself, absurd parameters.
+template <int D>
+SceneWorld<D> build_world(const Scene& scene);
+
+// Scene object `o`'s surface with the world's positions `x` (nv × D), lifted to R^4 for D = 3
+// only when the object itself lies in R^4 (it never does then). For drawing and saving.
+template <int D>
+void copy_positions_into(const SceneWorld<D>& sw, std::span<const Vec<D>> x, Scene& scene);
+
+}  // namespace s4d

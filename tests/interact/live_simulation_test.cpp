@@ -1,0 +1,251 @@
+// The live simulation through the real haptic loop (run_ticks, so deterministic): a device's
+// pull moves the held vertex and the body follows; along w moves w only; pins, pause, step,
+// reset, live settings; the scenario's script played in the loop matches `shadow4d run`.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "haptics/haptic_loop.hpp"
+#include "haptics/mouse_device.hpp"
+#include "haptics/replay_device.hpp"
+#include "interact/live_simulation.hpp"
+#include "proximity/mesh_proximity.hpp"
+#include "scenario/scenario_run.hpp"
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+// A cloth square in the xy plane; gravity, when on, pulls it out of its plane (along -z).
+Scene cloth_scene(int n, bool gravity) {
+  Scene s;
+  SceneObject o;
+  o.name = "cloth";
+  o.generator = GeneratorCall{"cloth", {{"n", n}, {"size", 1}}};
+  o.shape = generate("cloth", o.generator->params);
+  s.objects.push_back(o);
+  s.physics.stiffness = 200;
+  s.physics.gravity = gravity ? Vec4(0, 0, -9.81, 0) : Vec4::Zero();
+  return s;
+}
+
+DeviceMapping unit_mapping() {
+  return DeviceMapping::fit(Vec3::Zero(), 1.0, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.08));
+}
+
+// A device that stays at `from` for `rest` ticks, then with `buttons` held moves to `to` over
+// `move` ticks and stays there.
+Trajectory pull(const Vec3& from, const Vec3& to, std::uint32_t buttons, int rest, int move, int hold) {
+  Trajectory t;
+  t.header.device = "test hand";
+  t.header.caps.max_force = 3.3;
+  t.header.caps.max_continuous_force = 3.3;
+  t.header.caps.max_stiffness = 1000;
+  t.header.caps.max_force_rate = 1000;
+  t.header.caps.outputs_force = true;
+  const int n = rest + move + hold;
+  for (int i = 0; i < n; ++i) {
+    TickRecord r;
+    r.tick = static_cast<std::uint64_t>(i);
+    const double u = i < rest ? 0.0 : std::min(1.0, static_cast<double>(i - rest) / move);
+    const Vec3 p = from + u * (to - from);
+    const Vec3 v = i >= rest && i < rest + move ? Vec3((to - from) * 1000.0 / move) : Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      r.position[k] = p[k];
+      r.velocity[k] = v[k];
+      r.target[k] = p[k];
+    }
+    r.buttons = i < rest ? 0 : buttons;
+    t.ticks.push_back(r);
+  }
+  return t;
+}
+
+std::vector<Vec4> positions(const HapticSnapshot& s) {
+  std::vector<Vec4> x(s.points.size() / 4);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (int k = 0; k < 4; ++k) x[i][k] = s.points[4 * i + static_cast<std::size_t>(k)];
+  return x;
+}
+
+int true_intersections(const std::vector<Vec4>& x, const Scene& scene) {
+  const auto& tris = std::get<Surface<4>>(scene.objects[0].shape).triangles;
+  std::vector<Cell<3>> cells(tris.begin(), tris.end());
+  return static_cast<int>(intersecting_pairs<4, 3>(std::span<const Vec4>(x), cells, 1e-12).size());
+}
+
+struct Rig {
+  Scene scene;
+  std::unique_ptr<HapticLoop> loop;
+  Rig(Scene s, std::unique_ptr<Device> device, LiveOptions o = {}) : scene(std::move(s)) {
+    o.mapping = unit_mapping();
+    loop = std::make_unique<HapticLoop>(std::move(device), make_live_simulation(scene, nullptr, o));
+  }
+  const HapticSnapshot& snap() { return loop->snapshot(); }
+};
+
+TEST(LiveSimulation, ADevicePullMovesTheHeldVertexAndTheBodyFollows) {
+  const Scene scene = cloth_scene(12, false);
+  const auto& start = std::get<Surface<4>>(scene.objects[0].shape).vertices;
+  const int v = 5 * 12 + 6;  // near the middle
+  const DeviceMapping m = unit_mapping();
+  const Vec3 d0 = m.to_device(start[v].head<3>());
+  const Vec3 d1 = d0 + Vec3(0, 0, 0.02);  // 0.25 scene units toward the eye: out of the cloth's plane
+  Rig rig(scene, std::make_unique<ReplayDevice>(pull(d0, d1, 1, 50, 500, 1500), false));
+  rig.loop->run_ticks(1200);
+  EXPECT_EQ(rig.snap().status.held_vertex, v) << "the button took the vertex at the device's point";
+  rig.loop->run_ticks(800);
+  const std::vector<Vec4> x = positions(rig.snap());
+  const double moved = x[v].z() - start[v].z();
+  EXPECT_GT(moved, 0.7 * 0.25) << "the held vertex follows the hand";
+  EXPECT_LT(moved, 1.05 * 0.25);
+  const int neighbour = v + 1, corner = 0;
+  EXPECT_GT(x[neighbour].z() - start[neighbour].z(), 0.3 * moved) << "its neighbours follow";
+  EXPECT_LT(std::abs(x[corner].z() - start[corner].z()), moved) << "far away less";
+  EXPECT_EQ(true_intersections(x, scene), 0);
+  EXPECT_LE(rig.snap().max_force_output, 3.3 + 1e-12) << "the device's limit";
+  EXPECT_GT(rig.snap().max_force_output, 0) << "the hand felt the band";
+  EXPECT_EQ(rig.snap().safety.nonfinite, 0u);
+}
+
+TEST(LiveSimulation, AlongWTheVertexMovesInWAndKeepsItsShadow) {
+  const Scene scene = cloth_scene(12, false);
+  const auto& start = std::get<Surface<4>>(scene.objects[0].shape).vertices;
+  const int v = 5 * 12 + 6;
+  const DeviceMapping m = unit_mapping();
+  const Vec3 d0 = m.to_device(start[v].head<3>());
+  // Button 2 with the first: along the shadow ray; the device's y carries w.
+  Rig rig(scene, std::make_unique<ReplayDevice>(pull(d0, d0 + Vec3(0, 0.02, 0), 3, 50, 500, 1500), false));
+  rig.loop->run_ticks(2000);
+  EXPECT_EQ(rig.snap().status.grab_mode, 1);
+  const std::vector<Vec4> x = positions(rig.snap());
+  EXPECT_GT(x[v].w() - start[v].w(), 0.7 * 0.25) << "w follows the hand's y";
+  EXPECT_LT((x[v].head<3>() - start[v].head<3>()).norm(), 0.02) << "the shadow stays where it was";
+  EXPECT_EQ(true_intersections(x, scene), 0);
+}
+
+TEST(LiveSimulation, PinsHoldAgainstGravityUntilCleared) {
+  Rig rig(cloth_scene(8, true), std::make_unique<MouseDevice>());
+  const auto& start = std::get<Surface<4>>(rig.scene.objects[0].shape).vertices;
+  rig.loop->send(live_command(LiveCode::kPin, 7));
+  rig.loop->send(live_command(LiveCode::kTogglePin, 63));
+  rig.loop->run_ticks(300);
+  std::vector<Vec4> x = positions(rig.snap());
+  EXPECT_EQ(rig.snap().status.pinned, 2);
+  EXPECT_EQ(rig.snap().flags[7], 1);
+  EXPECT_EQ(rig.snap().flags[8], 0);
+  EXPECT_EQ(x[7], start[7]);
+  EXPECT_EQ(x[63], start[63]);
+  EXPECT_LT(x[30].z(), start[30].z() - 0.05) << "the rest falls";
+  rig.loop->send(live_command(LiveCode::kTogglePin, 63));
+  rig.loop->send(live_command(LiveCode::kClearPins));
+  rig.loop->run_ticks(100);
+  x = positions(rig.snap());
+  EXPECT_EQ(rig.snap().status.pinned, 0);
+  EXPECT_LT(x[7].z(), start[7].z()) << "let go, it falls";
+}
+
+TEST(LiveSimulation, PauseStepAndReset) {
+  Rig rig(cloth_scene(6, true), std::make_unique<MouseDevice>());
+  rig.loop->run_ticks(100);
+  EXPECT_EQ(rig.snap().status.sim_steps, 100) << "one World step a 1 ms tick";
+  rig.loop->send(live_command(LiveCode::kPause));
+  rig.loop->run_ticks(50);
+  EXPECT_EQ(rig.snap().status.sim_steps, 100);
+  EXPECT_FALSE(rig.snap().status.playing);
+  rig.loop->send(live_command(LiveCode::kStepOnce));
+  rig.loop->run_ticks(10);
+  EXPECT_EQ(rig.snap().status.sim_steps, 101);
+  rig.loop->send(live_time_scale(0.5));
+  rig.loop->send(live_command(LiveCode::kPlay));
+  rig.loop->run_ticks(100);
+  EXPECT_EQ(rig.snap().status.sim_steps, 151) << "half speed: a step every other tick";
+  rig.loop->send(live_command(LiveCode::kReset));
+  rig.loop->run_ticks(1);
+  EXPECT_LE(rig.snap().status.sim_steps, 1);
+  EXPECT_EQ(positions(rig.snap())[20].x(), std::get<Surface<4>>(rig.scene.objects[0].shape).vertices[20].x());
+}
+
+TEST(LiveSimulation, SettingsApplyLiveAndBadOnesAreRefusedWithAReason) {
+  Rig rig(cloth_scene(6, false), std::make_unique<MouseDevice>());
+  rig.loop->run_ticks(50);
+  const std::vector<Vec4> before = positions(rig.snap());
+  EXPECT_LT((before[10] - std::get<Surface<4>>(rig.scene.objects[0].shape).vertices[10]).norm(), 1e-9)
+      << "no gravity: at rest";
+  PhysicsSettings p = rig.scene.physics;
+  p.gravity = Vec4(0, 0, 0, -5);  // falling in w: the shadow does not show it
+  rig.loop->send(live_settings(p));
+  rig.loop->run_ticks(200);
+  const std::vector<Vec4> after = positions(rig.snap());
+  EXPECT_LT(after[10].w(), before[10].w() - 0.02);
+  EXPECT_EQ(rig.snap().status.settings_revision, 1u);
+  p.thickness = std::numeric_limits<double>::quiet_NaN();
+  rig.loop->send(live_settings(p));
+  p.thickness = 0.02;
+  p.integrator = "paper-euler";
+  p.stiffness = -3;
+  rig.loop->send(live_settings(p));
+  rig.loop->run_ticks(1);
+  EXPECT_EQ(rig.snap().status.settings_revision, 1u);
+  EXPECT_NE(std::string(rig.snap().status.message).find("stiffness"), std::string::npos) << rig.snap().status.message;
+}
+
+TEST(LiveSimulation, TheScriptPlayedInTheLoopIsTheScenarioRun) {
+  const Scenario sc = load_scenario(std::filesystem::path(S4D_SOURCE_DIR) / "scenarios" / "spun-trefoil-tighten.json");
+  LiveOptions o;
+  o.start_playing = false;
+  HapticLoop loop(std::make_unique<MouseDevice>(), make_live_simulation(sc.scene, &sc, o));
+  loop.run_ticks(20);
+  EXPECT_EQ(loop.snapshot().status.sim_steps, 0) << "a scenario opens paused";
+  loop.send(live_command(LiveCode::kPlayScript));
+  loop.run_ticks(300);
+  EXPECT_TRUE(loop.snapshot().status.script_running);
+  const auto run = ScenarioRun::make(sc);
+  for (int i = 0; i < 300; ++i) run->step();
+  const std::vector<Vec4> expected = run->positions(), got = positions(loop.snapshot());
+  ASSERT_EQ(got.size(), expected.size());
+  for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i], expected[i]) << "vertex " << i;
+  loop.send(live_command(LiveCode::kStopScript));
+  loop.run_ticks(1);
+  EXPECT_FALSE(loop.snapshot().status.script_running);
+}
+
+TEST(LiveSimulation, OnItsOwnThreadThePhysicsFollowsTheHapticClock) {
+  LiveOptions o;
+  o.async_physics = true;
+  Rig rig(cloth_scene(8, true), std::make_unique<MouseDevice>(), o);
+  for (int i = 0; i < 300; ++i) {  // 0.3 s of haptic time, about as fast as the wall clock
+    rig.loop->run_ticks(1);
+    std::this_thread::sleep_for(std::chrono::microseconds(1000));
+  }
+  double t = 0;
+  for (int i = 0; i < 200 && t < 0.2995; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    rig.loop->run_ticks(0);  // publishes the physics thread's newest state
+    t = rig.snap().status.sim_time;
+  }
+  EXPECT_GT(t, 0.2995) << "it catches up with the clock";
+  EXPECT_LT(t, 0.3 + 1e-9) << "and never runs ahead of it";
+  EXPECT_LT(positions(rig.snap())[30].z(), std::get<Surface<4>>(rig.scene.objects[0].shape).vertices[30].z());
+  // A clock that jumps 2 s ahead (a stalled physics) is owed at most 0.1 s: the rest is dropped
+  // and the simulation goes on in slow motion instead of racing to catch up.
+  rig.loop->run_ticks(2000);
+  for (int i = 0; i < 100; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    rig.loop->run_ticks(0);
+  }
+  EXPECT_LT(rig.snap().status.sim_time, 1.0);
+}
+
+TEST(LiveSimulation, NoSurfaceNoSimulation) {
+  Scene s;
+  SceneObject o;
+  o.shape = generate("torus-knot", {});
+  s.objects.push_back(o);
+  EXPECT_THROW(make_live_simulation(s, nullptr, {}), Error);
+}
+
+}  // namespace
+}  // namespace s4d

@@ -1,0 +1,108 @@
+// Stepped scenario runs: their state hashes after a fixed number of steps are pinned (behaviour
+// unchanged is a test), and verdicts tell a scenario done from one not done.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "scenario/scenario_run.hpp"
+
+namespace s4d {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kScenarios = fs::path(S4D_SOURCE_DIR) / "scenarios";
+constexpr int kHashSteps = 200;
+
+std::string hex(std::uint64_t h) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%016llx", static_cast<unsigned long long>(h));
+  return b;
+}
+
+std::map<std::string, std::string> stored_hashes() {
+  std::map<std::string, std::string> m;
+  std::ifstream in(fs::path(S4D_TEST_DATA) / ".." / "scenario" / "data" / "state_hashes.tsv");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string name, hash;
+    ls >> name >> hash;
+    m[name] = hash;
+  }
+  return m;
+}
+
+// A change that moves these hashes changes what every scenario does: say why in the commit and
+// update tests/scenario/data/state_hashes.tsv with the values this test prints.
+TEST(ScenarioRun, StateHashesArePinned) {
+  const auto stored = stored_hashes();
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(kScenarios)) {
+    if (e.path().extension() != ".json") continue;
+    const Scenario sc = load_scenario(e.path());
+    const auto run = ScenarioRun::make(sc);
+    for (int i = 0; i < kHashSteps; ++i) run->step();
+    const std::string h = hex(run->state_hash());
+    const auto it = stored.find(sc.name);
+    ++n;
+    if (it == stored.end()) {
+      ADD_FAILURE() << "no stored hash for " << sc.name << "; after " << kHashSteps << " steps it is\n"
+                    << sc.name << "\t" << h;
+      continue;
+    }
+    EXPECT_EQ(h, it->second) << sc.name << " after " << kHashSteps << " steps";
+  }
+  EXPECT_EQ(n, 8);
+}
+
+TEST(ScenarioRun, TheSameRunGivesTheSameHashAndAnotherDoesNot) {
+  Scenario sc = load_scenario(kScenarios / "spun-trefoil-tighten.json");
+  auto a = ScenarioRun::make(sc), b = ScenarioRun::make(sc);
+  for (int i = 0; i < 50; ++i) {
+    a->step();
+    b->step();
+  }
+  EXPECT_EQ(a->state_hash(), b->state_hash());
+  sc.script[0].stiffness *= 1.01;
+  auto c = ScenarioRun::make(sc);
+  for (int i = 0; i < 50; ++i) c->step();
+  EXPECT_NE(a->state_hash(), c->state_hash());
+}
+
+TEST(ScenarioRun, TheVerdictTellsDoneFromNotDone) {
+  Scenario sc = load_scenario(kScenarios / "ribbon-falls-apart-4d.json");
+  auto run = ScenarioRun::make(sc);
+  EXPECT_FALSE(run->verdict().pass) << "at the start the ends are close: it has not fallen apart";
+  while (!run->done()) run->step();
+  const VerdictResult v = run->verdict();
+  EXPECT_TRUE(v.pass) << v.detail;
+  EXPECT_EQ(run->check().intersections, 0);
+  EXPECT_GT(run->check().min_gap, 0);
+  EXPECT_EQ(run->steps(), 4000);
+  EXPECT_NEAR(run->time(), 4.0, 1e-9);
+
+  sc.script.clear();  // nobody pulls: it stays where it is
+  auto idle = ScenarioRun::make(sc);
+  for (int i = 0; i < 500; ++i) idle->step();
+  EXPECT_FALSE(idle->verdict().pass) << idle->verdict().detail;
+}
+
+TEST(ScenarioRun, CurrentSceneCarriesThePositions) {
+  const Scenario sc = load_scenario(kScenarios / "spun-trefoil-tighten.json");
+  auto run = ScenarioRun::make(sc);
+  for (int i = 0; i < 300; ++i) run->step();
+  const Scene now = run->current_scene();
+  const auto& s = std::get<Surface<4>>(now.objects[0].shape);
+  const std::vector<Vec4> x = run->positions();
+  ASSERT_EQ(s.vertices.size(), x.size());
+  EXPECT_EQ(s.vertices[0], x[0]);
+  EXPECT_NE(s.vertices[0], std::get<Surface<4>>(sc.scene.objects[0].shape).vertices[0]) << "the pole was pulled";
+}
+
+}  // namespace
+}  // namespace s4d
