@@ -20,6 +20,9 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
                "draw the shadow's intersection curves (yellow shadow-only, magenta true 4D) and "
                "mark the crossings of the curves as seen (a white dot on the over strand)");
   app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
+  app.add_option("--zoom", zoom, "closer (> 1) or farther (< 1) than the view that fits the scene");
+  app.add_option("--opacity", opacity,
+                 "surfaces' opacity in [0.05, 1]: below 1 a sheet behind shows through (1 = opaque)");
 }
 
 std::pair<int, int> ViewOptions::parsed_size() const {
@@ -57,6 +60,19 @@ void ViewOptions::apply(Scene& scene) const {
     if (!std::isfinite(*tube_radius) || *tube_radius <= 0 || *tube_radius > 100)
       throw Error("--tube-radius must be a positive number (scene units)");
     scene.view.tube_radius = *tube_radius;
+  }
+  if (zoom) {
+    if (!std::isfinite(*zoom) || *zoom < 0.01 || *zoom > 100)
+      throw Error("--zoom must be a number in [0.01, 100] (1 = the view that fits the scene)");
+    scene.view.zoom = *zoom;
+  }
+  if (opacity) {
+    if (!(*opacity >= 0.05 && *opacity <= 1)) {
+      char got[32];
+      std::snprintf(got, sizeof got, "%g", *opacity);
+      throw Error(std::string("--opacity must be in [0.05, 1] (1 = opaque), got ") + got);
+    }
+    scene.view.opacity = *opacity;
   }
 }
 

@@ -19,6 +19,8 @@ struct ViewOptions {
   bool shadow = false;
   bool intersections = false;
   std::optional<double> tube_radius;
+  std::optional<double> opacity;  // surfaces' opacity, [0.05, 1]
+  std::optional<double> zoom;     // multiplies the fitted view, > 1 closer
 
   // Adds --size only when `with_size`.
   void add_to(CLI::App& app, bool with_size = true);

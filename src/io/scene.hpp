@@ -50,6 +50,9 @@ struct ViewSettings {
   // Not stored in scene files.
   Vec3 fit_centre = Vec3::Zero();
   double fit_radius = 0;
+  // Surfaces' opacity in [0.05, 1], 1 = opaque: below 1 a sheet behind shows through the one in
+  // front. Curve tubes and the intersection marks stay opaque.
+  double opacity = 1;
   Vec3f background{0.08f, 0.09f, 0.11f};
 };
 

@@ -117,6 +117,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
   view["shadow"] = v.shadow;
   view["intersections"] = v.intersections;
   view["tube_radius"] = number(v.tube_radius);
+  view["opacity"] = number(v.opacity);
   view["background"] = array(v.background, 3);
   root["view"] = std::move(view);
 

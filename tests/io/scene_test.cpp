@@ -260,6 +260,25 @@ TEST(Scene, SaveThenLoadRoundTrip) {
   EXPECT_EQ(r2.objects.size(), 4u);
 }
 
+// view.opacity: read, kept within [0.05, 1] with the key named in the message, written back.
+TEST(Scene, OpacityIsReadCheckedAndSavedBack) {
+  EXPECT_EQ(parse_scene(R"({"version": 1})", "o.json").view.opacity, 1.0) << "opaque by default";
+  Scene s = parse_scene(R"({"version": 1, "view": {"opacity": 0.4}})", "o.json");
+  EXPECT_EQ(s.view.opacity, 0.4);
+  EXPECT_EQ(parse_scene(R"({"version": 1, "view": {"opacity": 0.05}})", "o.json").view.opacity, 0.05);
+  for (const char* bad : {"0.04", "0", "1.01", "-1"}) {
+    SCOPED_TRACE(bad);
+    test::expect_parse_error(
+        [&] { parse_scene(std::string(R"({"version": 1, "view": {"opacity": )") + bad + "}}", "o.json"); }, 0,
+        "view.opacity: " + std::string(bad) + " is out of range: must be in [0.05, 1]");
+  }
+  test::expect_parse_error([] { parse_scene(R"({"version": 1, "view": {"opacity": "half"}})", "o.json"); }, 0,
+                           "view.opacity: must be a number");
+  test::TempDir dir;
+  save_scene(s, dir / "o.json");
+  EXPECT_EQ(load_scene(dir / "o.json").view.opacity, 0.4);
+}
+
 TEST(Scene, SaveIntoAMissingFolderFailsCleanly) {
   test::TempDir dir;
   EXPECT_THROW(save_scene(Scene{}, dir / "no" / "such" / "s.json"), Error);
