@@ -17,8 +17,10 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
   app.add_flag("--wireframe", wireframe, "draw triangle edges");
   app.add_flag("--shadow", shadow, "flat-shaded shadow drawing (no lighting)");
   app.add_flag("--intersections", intersections,
-               "draw the shadow's intersection curves (yellow shadow-only, magenta true 4D) and "
-               "mark the crossings of the curves as seen (a white dot on the over strand)");
+               "draw the shadow's intersection curves (yellow shadow-only, with a red line on the "
+               "sheet nearer in w and a blue one on the farther; magenta true 4D; a bead at each "
+               "pinch point) and mark the crossings of the curves as seen (a white dot on the over "
+               "strand)");
   app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
   app.add_option("--zoom", zoom, "closer (> 1) or farther (< 1) than the view that fits the scene");
   app.add_option("--opacity", opacity,

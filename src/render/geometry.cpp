@@ -211,6 +211,35 @@ RenderMesh tube_mesh(const std::vector<Vec3>& input, bool closed, const TubeOpti
   return mesh;
 }
 
+RenderMesh sphere_mesh(const Vec3& centre, double radius, int rings, int sides) {
+  if (rings < 3 || sides < 3)
+    throw Error("a sphere needs at least 3 rings and 3 sides, got " + std::to_string(rings) + " and " +
+                std::to_string(sides));
+  if (!(radius > 0) || !std::isfinite(radius) || !centre.allFinite())
+    throw Error("a sphere needs a finite centre and a positive finite radius");
+  RenderMesh m;
+  // Rows 0..rings of latitude, the poles as rows of coincident points (their triangles have no
+  // area, which costs nothing and keeps the indexing one grid).
+  for (int i = 0; i <= rings; ++i) {
+    const double th = std::numbers::pi * i / rings;
+    for (int k = 0; k < sides; ++k) {
+      const double ph = 2 * std::numbers::pi * k / sides;
+      const Vec3 n(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+      m.positions.push_back(centre + radius * n);
+      m.normals.push_back(n);
+      m.source.push_back(0);
+    }
+  }
+  auto vid = [&](int i, int k) { return static_cast<std::uint32_t>(i * sides + k % sides); };
+  for (int i = 0; i < rings; ++i)
+    for (int k = 0; k < sides; ++k) {
+      // Counter-clockwise seen from outside (theta runs down from +z, phi counter-clockwise).
+      m.indices.insert(m.indices.end(), {vid(i, k), vid(i + 1, k), vid(i + 1, k + 1)});
+      m.indices.insert(m.indices.end(), {vid(i, k), vid(i + 1, k + 1), vid(i, k + 1)});
+    }
+  return m;
+}
+
 void append_mesh(RenderMesh& mesh, const RenderMesh& part, int source_offset) {
   const auto base = static_cast<std::uint32_t>(mesh.positions.size());
   mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());

@@ -55,6 +55,10 @@ struct TubeOptions {
 RenderMesh tube_mesh(const std::vector<Vec3>& points, bool closed, const TubeOptions& options,
                      int first_source = 0);
 
+// A UV sphere (`rings` latitude bands, `sides` around, >= 3 each) centred at `centre`: the beads
+// that mark points (pinch points of a shadow). Outward normals; source 0 everywhere.
+RenderMesh sphere_mesh(const Vec3& centre, double radius, int rings = 6, int sides = 10);
+
 // Appends `part` to `mesh` (indices and sources shifted).
 void append_mesh(RenderMesh& mesh, const RenderMesh& part, int source_offset);
 

@@ -42,7 +42,8 @@ void main() {
 }
 )";
 
-// Modes: 0 = lit (Blinn-Phong, headlight + fill), 1 = flat shadow (vertex colour, no lighting),
+// Modes: 0 = lit (Blinn-Phong, headlight + fill), 1 = flat (vertex colour, no lighting: the shadow
+// drawing, and unlit overlays),
 // 2 = one solid colour (wireframe edges).
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec3 v_position;
@@ -212,7 +213,12 @@ void Renderer::draw(const Scene& scene, int width, int height) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
-  for (const auto& m : r.meshes) m->draw();
+  for (std::size_t i = 0; i < r.meshes.size(); ++i) {
+    const bool lit = i < geometry.objects.size() || geometry.overlays[i - geometry.objects.size()].lit;
+    if (!lit && !scene.view.shadow) glUniform1i(r.u_mode, 1);
+    r.meshes[i]->draw();
+    if (!lit && !scene.view.shadow) glUniform1i(r.u_mode, 0);
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // Pass 2: triangle edges of surfaces in a dark colour (tubes would only show their facets).

@@ -2,7 +2,9 @@
 #include "render/scene_geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
@@ -94,30 +96,136 @@ void extend(DepthRange& r, double d) {
   }
 }
 
-// One overlay for the intersection curves of every R^4 surface with itself and with each other:
-// thin tubes along their strokes, in each segment's class's colour, and a bead where the sheets
-// truly meet.
-DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionSummary& sum) {
-  std::vector<const Surface<4>*> surfaces;
-  for (const SceneObject& obj : scene.objects)
-    if (const auto* s = std::get_if<Surface<4>>(&obj.shape)) surfaces.push_back(s);
-  DrawObject d;
-  d.surface = false;
-  TubeOptions line;
-  line.radius = radius;
-  line.sides = 8;
-  TubeOptions bead = line;
-  bead.radius = 2.5 * radius;
-  auto add = [&](const std::vector<Vec3>& pts, const TubeOptions& opt, const Vec3f& colour,
-                 bool closed) {
-    append_mesh(d.mesh, tube_mesh(pts, closed, opt), 0);
+// The sizes of what view.intersections draws along the shadow's curves, from the curves' tube
+// radius: the marks sit beside the tube on each sheet with a clear gap, thinner than it so that
+// the four of them do not merge into one band at a glance.
+struct OverlaySizes {
+  double line;    // the curve's tube
+  double mark;    // the above-below lines' tubes
+  double offset;  // from the curve to a mark's axis, within the sheet
+  double bead;    // pinch points
+};
+OverlaySizes overlay_sizes(double line) { return {line, 0.7 * line, 3.0 * line, 3.0 * line}; }
+
+// The corners of triangle t of `s` in the shadow.
+std::array<Vec3, 3> shadow_triangle(const Surface<4>& s, int t, const Frame<4>& frame) {
+  const Triangle& tri = s.triangles[static_cast<std::size_t>(t)];
+  return {frame.shadow(s.vertices[tri[0]]), frame.shadow(s.vertices[tri[1]]), frame.shadow(s.vertices[tri[2]])};
+}
+
+// Barycentric coordinates of p (in, or near, the plane of x) in triangle x; the centre's when x
+// has no area (a point on none of its edges).
+std::array<double, 3> barycentric(const std::array<Vec3, 3>& x, const Vec3& p) {
+  const Vec3 e1 = x[1] - x[0], e2 = x[2] - x[0], q = p - x[0];
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (!(det > 0)) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  const double b1 = (d22 * e1.dot(q) - d12 * e2.dot(q)) / det;
+  const double b2 = (d11 * e2.dot(q) - d12 * e1.dot(q)) / det;
+  return {1 - b1 - b2, b1, b2};
+}
+
+// The edges of a surface that belong to one triangle only (its border), as (low, high) vertex
+// pairs, sorted for binary search.
+std::vector<std::pair<int, int>> border_edges(const Surface<4>& s) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(3 * s.triangles.size());
+  for (const Triangle& t : s.triangles)
+    for (int k = 0; k < 3; ++k) edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::pair<int, int>> border;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) border.push_back(edges[i]);
+    i = j;
+  }
+  return border;
+}
+
+// One pair of sheets' intersections (a surface with itself, or two surfaces) with what the marks
+// and beads need of each: the two surfaces (the same one for self-intersections), lazily their
+// borders.
+struct SheetPair {
+  const ShadowIntersections& r;
+  const Surface<4>& sa;
+  const Surface<4>& sb;
+  const Frame<4>& frame;
+  std::optional<std::vector<std::pair<int, int>>> border_a, border_b;
+
+  // Is p, an end of a segment, on an edge of triangle t of `s` that is the surface's border?
+  bool on_border(const Surface<4>& s, std::optional<std::vector<std::pair<int, int>>>& border, int t,
+                 const Vec3& p) {
+    const std::array<Vec3, 3> x = shadow_triangle(s, t, frame);
+    const std::array<double, 3> b = barycentric(x, p);
+    const Triangle& tri = s.triangles[static_cast<std::size_t>(t)];
+    for (int k = 0; k < 3; ++k) {
+      if (std::abs(b[k]) > 1e-7) continue;  // p is on the edge opposite corner k
+      if (!border) border = border_edges(s);
+      const int u = tri[(k + 1) % 3], v = tri[(k + 2) % 3];
+      if (std::binary_search(border->begin(), border->end(), std::pair{std::min(u, v), std::max(u, v)}))
+        return true;
+    }
+    return false;
+  }
+  bool on_border(const ShadowSegment& seg, const Vec3& p) {
+    return on_border(sa, border_a, seg.a, p) || on_border(sb, border_b, seg.b, p);
+  }
+};
+
+// Everything view.intersections draws over the R^4 surfaces: the curves and beads in one
+// DrawObject, the marks (unlit) in another.
+class IntersectionOverlay {
+ public:
+  IntersectionOverlay(double line_radius, IntersectionSummary& sum)
+      : size_(overlay_sizes(line_radius)), sum_(sum) {
+    d_.surface = false;
+    marks_.surface = false;
+    marks_.lit = false;
+  }
+
+  void add(SheetPair& p) {
+    sum_.add(p.r);
+    curves(p.r);
+    for (const ShadowStroke& k : p.r.strokes) marks(p, k);
+    ends(p);
+  }
+
+  // The curves and beads, then the marks (unlit).
+  std::vector<DrawObject> finish() {
+    for (DrawObject* d : {&d_, &marks_}) d->mesh.source.assign(d->mesh.vertex_count(), 0);
+    sum_.computed = true;
+    std::vector<DrawObject> out;
+    out.push_back(std::move(d_));
+    out.push_back(std::move(marks_));
+    return out;
+  }
+
+ private:
+  static void append(DrawObject& d, const RenderMesh& m, const Vec3f& colour) {
+    append_mesh(d.mesh, m, 0);
     d.colours.resize(d.mesh.vertex_count(), colour);
     d.depth.resize(d.mesh.vertex_count(), 0.0);
-  };
-  auto draw = [&](const ShadowIntersections& r) {
-    sum.add(r);
-    // One smooth tube per run of a stroke's segments of one class (a tube per segment would
-    // show a cap at every joint).
+  }
+  void append(const RenderMesh& m, const Vec3f& colour) { append(d_, m, colour); }
+  void tube(const std::vector<Vec3>& pts, double radius, const Vec3f& colour, bool closed = false) {
+    TubeOptions opt;
+    opt.radius = radius;
+    opt.sides = 8;
+    append(d_, tube_mesh(pts, closed, opt), colour);
+  }
+  // A mark's line: unlit, so its cross-section does not show and four sides look as round as
+  // eight, at half the vertices (the marks are most of what this overlay draws).
+  void mark(const std::vector<Vec3>& pts, const Vec3f& colour) {
+    TubeOptions opt;
+    opt.radius = size_.mark;
+    opt.sides = 4;
+    append(marks_, tube_mesh(pts, false, opt), colour);
+  }
+
+  // The curves as thin tubes: one smooth tube per run of a stroke's segments of one class (a tube
+  // per segment would show a cap at every joint), and a bead where the sheets truly meet.
+  void curves(const ShadowIntersections& r) {
     for (const ShadowStroke& k : r.strokes) {
       const int n = static_cast<int>(k.segments.size());
       for (int first = 0; first < n;) {
@@ -127,26 +235,159 @@ DrawObject intersection_overlay(const Scene& scene, double radius, IntersectionS
         const bool loop = k.closed && first == 0 && last == n - 1;
         std::vector<Vec3> pts(k.points.begin() + first, k.points.begin() + last + 2);
         if (loop) pts.pop_back();  // tube_mesh closes it
-        add(pts, line, is_true ? kTrueIntersectionColour : kShadowOnlyColour, loop);
+        tube(pts, size_.line, is_true ? kTrueIntersectionColour : kShadowOnlyColour, loop);
         first = last + 1;
       }
     }
     for (const ShadowSegment& s : r.segments) {
       if (!s.true_intersection) continue;
       const Vec3 along = (s.p1 - s.p0).norm() > 0 ? Vec3((s.p1 - s.p0).normalized()) : Vec3::UnitX();
-      add({s.meet - bead.radius * along, s.meet + bead.radius * along}, bead, kTrueIntersectionColour,
-          false);
+      const double bead = 2.5 * size_.line;
+      TubeOptions opt;
+      opt.radius = bead;
+      opt.sides = 8;
+      append(tube_mesh({s.meet - bead * along, s.meet + bead * along}, false, opt), kTrueIntersectionColour);
     }
-  };
-  sum.surfaces = static_cast<int>(surfaces.size());
-  for (std::size_t i = 0; i < surfaces.size(); ++i) {
-    draw(shadow_intersections(*surfaces[i], scene.frame));
-    for (std::size_t j = i + 1; j < surfaces.size(); ++j)
-      draw(shadow_intersections(*surfaces[i], *surfaces[j], scene.frame));
   }
-  d.mesh.source.assign(d.mesh.vertex_count(), 0);
-  sum.computed = true;
-  return d;
+
+  // The above-below marks along one stroke: on each sheet, a line on either side of the curve
+  // (offset within the sheet's triangle, perpendicular to the curve), red on the sheet nearer in w
+  // and blue on the farther. Both sides, because from any eye point the sheet in front hides one
+  // side of the other. Where the sheets truly meet their order swaps, so the lines break there.
+  void marks(SheetPair& p, const ShadowStroke& k) {
+    struct Run {
+      std::vector<Vec3> at;                  // points on the curve
+      std::vector<Vec3> over_dir, under_dir; // unit, within each sheet, perpendicular to the curve
+    } run;
+    Vec3 last_over = Vec3::Zero(), last_under = Vec3::Zero();  // for a consistent side
+    auto flush = [&] {
+      if (run.at.size() >= 2)
+        for (const double side : {1.0, -1.0}) {
+          std::vector<Vec3> over(run.at.size()), under(run.at.size());
+          for (std::size_t i = 0; i < run.at.size(); ++i) {
+            over[i] = run.at[i] + side * size_.offset * run.over_dir[i];
+            under[i] = run.at[i] + side * size_.offset * run.under_dir[i];
+          }
+          mark(over, kAboveColour);
+          mark(under, kBelowColour);
+        }
+      run = Run{};
+      last_over = last_under = Vec3::Zero();
+    };
+    // One piece of the curve, from `from` to `to`, with sheet a nearer in w or not.
+    auto piece = [&](const ShadowSegment& s, const Vec3& from, const Vec3& to, bool a_over) {
+      const Vec3 chord = to - from;
+      if (!(chord.norm() > 1e-12 * (1 + from.norm()))) return;
+      const Vec3 along = chord.normalized();
+      const std::array<Vec3, 3> ta = shadow_triangle(p.sa, s.a, p.frame);
+      const std::array<Vec3, 3> tb = shadow_triangle(p.sb, s.b, p.frame);
+      const Vec3 na = (ta[1] - ta[0]).cross(ta[2] - ta[0]), nb = (tb[1] - tb[0]).cross(tb[2] - tb[0]);
+      Vec3 over = (a_over ? na : nb).cross(along), under = (a_over ? nb : na).cross(along);
+      if (!(over.norm() > 0) || !(under.norm() > 0)) return flush();  // a sheet seen edge-on
+      over.normalize();
+      under.normalize();
+      if (over.dot(last_over) < 0) over = -over;
+      if (under.dot(last_under) < 0) under = -under;
+      if (run.at.empty()) {
+        run.at.push_back(from);
+        run.over_dir.push_back(over);
+        run.under_dir.push_back(under);
+      } else {  // a joint: the mean of the two pieces' directions
+        run.over_dir.back() = (run.over_dir.back() + over).normalized();
+        run.under_dir.back() = (run.under_dir.back() + under).normalized();
+      }
+      run.at.push_back(to);
+      run.over_dir.push_back(over);
+      run.under_dir.push_back(under);
+      last_over = over;
+      last_under = under;
+    };
+    for (std::size_t i = 0; i < k.segments.size(); ++i) {
+      const ShadowSegment& s = p.r.segments[static_cast<std::size_t>(k.segments[i])];
+      const Vec3& from = k.points[i];
+      const Vec3& to = k.points[i + 1];
+      // The stroke may walk the segment from p1 to p0.
+      const bool forward = (s.p0 - from).squaredNorm() <= (s.p1 - from).squaredNorm();
+      // w of sheet a less w of sheet b, at `from` and at `to`.
+      const double at_from = forward ? s.depth_a0 - s.depth_b0 : s.depth_a1 - s.depth_b1;
+      const double at_to = forward ? s.depth_a1 - s.depth_b1 : s.depth_a0 - s.depth_b0;
+      if (!s.true_intersection) {
+        piece(s, from, to, at_from + at_to > 0);
+      } else {
+        piece(s, from, s.meet, at_from > 0 || (at_from == 0 && at_to < 0));
+        flush();
+        piece(s, s.meet, to, at_to > 0 || (at_to == 0 && at_from < 0));
+      }
+    }
+    flush();
+  }
+
+  // Where the curves end. Strokes of no length (where the curve passes exactly through a mesh
+  // edge of both sheets, as on a symmetric surface, the finder returns point-like segments that
+  // join the nodes around them) are left out; then a node that ends one stroke is a curve end, and
+  // one that ends three or more is a branch point. A curve end on a surface's border is where a
+  // sheet stops; any other is a pinch point of the shadow (the fold of a Whitney umbrella), beaded.
+  void ends(SheetPair& p) {
+    struct End {
+      Vec3 at;
+      int segment;
+    };
+    std::vector<End> found;
+    for (const ShadowStroke& k : p.r.strokes) {
+      if (k.closed) continue;
+      double length = 0;
+      for (std::size_t i = 0; i + 1 < k.points.size(); ++i) length += (k.points[i + 1] - k.points[i]).norm();
+      if (!(length > 1e-9 * (1 + k.points.front().norm()))) continue;
+      found.push_back({k.points.front(), k.segments.front()});
+      found.push_back({k.points.back(), k.segments.back()});
+    }
+    // Strokes that meet share their end point exactly (the finder gives them the node's point).
+    auto less = [](const End& x, const End& y) {
+      return std::lexicographical_compare(x.at.data(), x.at.data() + 3, y.at.data(), y.at.data() + 3);
+    };
+    std::sort(found.begin(), found.end(), less);
+    for (std::size_t i = 0; i < found.size();) {
+      std::size_t j = i;
+      while (j < found.size() && found[j].at == found[i].at) ++j;
+      if (j - i >= 3) ++sum_.branch_points;
+      if (j - i == 1) {
+        const End& e = found[i];
+        if (p.on_border(p.r.segments[static_cast<std::size_t>(e.segment)], e.at)) {
+          ++sum_.border_ends;
+        } else {
+          ++sum_.pinch_points;
+          append(sphere_mesh(e.at, size_.bead), kPinchPointColour);
+        }
+      }
+      i = j;
+    }
+  }
+
+  OverlaySizes size_;
+  IntersectionSummary& sum_;
+  DrawObject d_;      // curves, true points' and pinch points' beads
+  DrawObject marks_;  // the above-below marks
+};
+
+// The overlays of the intersection curves of every R^4 surface with itself and with each other:
+// the curves with their beads, and the marks.
+std::vector<DrawObject> intersection_overlays(const Scene& scene, double radius, IntersectionSummary& sum) {
+  std::vector<const Surface<4>*> surfaces;
+  for (const SceneObject& obj : scene.objects)
+    if (const auto* s = std::get_if<Surface<4>>(&obj.shape)) surfaces.push_back(s);
+  sum.surfaces = static_cast<int>(surfaces.size());
+  IntersectionOverlay overlay(radius, sum);
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    const ShadowIntersections self = shadow_intersections(*surfaces[i], scene.frame);
+    SheetPair p{self, *surfaces[i], *surfaces[i], scene.frame, {}, {}};
+    overlay.add(p);
+    for (std::size_t j = i + 1; j < surfaces.size(); ++j) {
+      const ShadowIntersections pair = shadow_intersections(*surfaces[i], *surfaces[j], scene.frame);
+      SheetPair q{pair, *surfaces[i], *surfaces[j], scene.frame, {}, {}};
+      overlay.add(q);
+    }
+  }
+  return overlay.finish();
 }
 
 // The line of IntersectionSummary::gauss_codes for one curve's image: the knot engine's diagram
@@ -334,7 +575,18 @@ ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera) {
 
 std::string intersection_text(const IntersectionSummary& s) {
   std::ostringstream o;
-  if (s.surfaces > 0 || s.curve_objects == 0) o << counts_text(s);
+  if (s.surfaces > 0 || s.curve_objects == 0) {
+    // The ends go between the counts and counts_text's note on a non-generic view (its wording
+    // kept), which ends the sentence.
+    const std::string full = counts_text(s);
+    ShadowCurveCounts plain = s;
+    plain.coplanar_pairs = 0;
+    const std::string counts = counts_text(plain);
+    o << counts << "; " << s.pinch_points << " pinch point(s)";
+    if (s.border_ends > 0) o << ", " << s.border_ends << " curve end(s) at a border";
+    if (s.branch_points > 0) o << ", " << s.branch_points << " branch point(s)";
+    o << full.substr(counts.size());
+  }
   if (s.curve_objects > 0) {
     if (s.surfaces > 0) o << "; ";
     o << s.crossings << " crossing(s) of the curves in this view";
@@ -412,8 +664,9 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
   }
   if (view.intersections) {
     // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
-    g.overlays.push_back(intersection_overlay(scene, 0.5 * radius, g.intersections));
-    add_crossings(scene, g.camera, radius, g.overlays.back(), g.intersections);
+    g.overlays = intersection_overlays(scene, 0.5 * radius, g.intersections);
+    add_crossings(scene, g.camera, radius, g.overlays.front(), g.intersections);
+    if (g.intersections.surfaces == 0) g.overlays.pop_back();  // no marks without surfaces
   }
   return g;
 }

@@ -20,6 +20,7 @@ struct DrawObject {
   std::vector<Vec3f> colours;  // nv × 3, linear RGB in [0, 1]
   std::vector<double> depth;   // nv, the depth that chose the colour (w for R^4, view depth for R^3)
   bool surface = true;         // surfaces get the wireframe overlay; tubes do not
+  bool lit = true;             // false: drawn in its colours as they are (the above-below marks)
   int dim = 4;                 // ambient dimension of the source object
 };
 
@@ -33,6 +34,16 @@ struct DepthRange {
 // meets itself in R^4 (the paper's depth test), marked again by a bead.
 inline const Vec3f kShadowOnlyColour{1.0f, 0.82f, 0.10f};
 inline const Vec3f kTrueIntersectionColour{1.0f, 0.10f, 0.85f};
+// The above-below marks beside each curve (the paper's Fig. 8c): a line on the sheet nearer in w
+// (above: red, the coolwarm map's near end) and on the farther (below: blue, its far end). Drawn
+// unlit and brighter than the map's ends, so that a red line still shows on a sheet that is
+// itself red. They add to the yellow curve rather than replace it: the curve is where the sheets
+// cross, what the counts and the pinch beads refer to, and what pairs the red line with the blue
+// one when several crossings are close.
+inline const Vec3f kAboveColour{1.0f, 0.13f, 0.10f};
+inline const Vec3f kBelowColour{0.15f, 0.42f, 1.0f};
+// The bead where a curve ends inside the surface: a pinch point of the shadow (Fig. 12).
+inline const Vec3f kPinchPointColour{0.20f, 0.90f, 0.35f};
 // The dot on the over strand at each crossing of a curve's image (view.intersections).
 inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
 
@@ -41,6 +52,12 @@ inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
 struct IntersectionSummary : ShadowCurveCounts {  // true_points: the beads drawn
   bool computed = false;  // view.intersections was on
   int surfaces = 0;       // R^4 surfaces looked at
+  // Where the curves end: inside the surface (a pinch point of the shadow, beaded; a generic
+  // view of a closed surface has an even number), or on a surface's border (where a sheet
+  // stops); and nodes where three or more curve pieces meet (a non-generic view of the mesh).
+  int pinch_points = 0;
+  int border_ends = 0;
+  int branch_points = 0;
   // The curves' image on the screen (their diagram in this view).
   int curve_objects = 0;
   int crossings = 0;
@@ -90,14 +107,16 @@ std::vector<Polyline<3>> drawn_curve(const Shape& shape, const Frame<4>& frame,
 // shadow through scene.frame): the knot diagram of the view, perspective included.
 ScreenCrossings screen_crossings(const Scene& scene, const Camera& camera);
 
-// "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s))", and a note when the
-// view is not generic; for curves, "3 crossing(s) of the curves in this view". Only the parts the
-// scene has.
+// "3 curve(s), total length 1.2: 2 shadow-only, 1 true (2 true point(s)); 4 pinch point(s)", the
+// ends on a border and branch points when there are any, and a note when the view is not
+// generic; for curves, "3 crossing(s) of the curves in this view". Only the parts the scene has.
 std::string intersection_text(const IntersectionSummary& s);
 
 struct SceneGeometry {
   std::vector<DrawObject> objects;  // one per scene object, in order (empty meshes kept)
-  // Drawn over the objects: the shadow's intersection curves when view.intersections is on.
+  // Drawn over the objects when view.intersections is on: the shadow's intersection curves with
+  // their beads and the curves' crossing dots, then (when there are R^4 surfaces) the
+  // above-below marks, unlit.
   std::vector<DrawObject> overlays;
   IntersectionSummary intersections;
   BoundingSphere bounds;            // of every drawn vertex
@@ -113,8 +132,9 @@ struct SceneGeometry {
 // (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
 // and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
 // colour or a neutral grey. With view.intersections, adds the intersection curves of the R^4
-// surfaces' shadow as thin tubes and a dot on the over strand of each crossing of the curves'
-// image (overlays). Throws s4d::Error on a mesh with out-of-range triangle indices.
+// surfaces' shadow as thin tubes with their above-below marks and pinch-point beads, and a dot on
+// the over strand of each crossing of the curves' image (overlays). Throws s4d::Error on a mesh
+// with out-of-range triangle indices.
 SceneGeometry build_scene_geometry(const Scene& scene, double aspect);
 
 // The colour of an object when depth colouring is off (or the map is kGrey).

@@ -1,10 +1,13 @@
-// Pure-geometry tests of the renderer: projection, normals, tubes, bounding spheres (no GL).
+// Pure-geometry tests of the renderer: projection, normals, tubes, beads, bounding spheres (no GL).
 #include "render/geometry.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "core/error.hpp"
 #include "render/test_shapes.hpp"
@@ -198,6 +201,46 @@ TEST(Tube, DegenerateInput) {
   o.radius = 0.1;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(tube_mesh({Vec3(0, 0, 0), Vec3(nan, 0, 0)}, false, o), Error);
+}
+
+// The beads: every vertex on the sphere with its outward unit normal, every triangle with area
+// wound counter-clockwise seen from outside, and the whole closed (each edge in two triangles).
+TEST(Sphere, VerticesOnItNormalsOutwardWindingOutward) {
+  const Vec3 c(1, -2, 0.5);
+  const RenderMesh m = sphere_mesh(c, 0.3, 6, 10);
+  EXPECT_EQ(m.vertex_count(), 7u * 10u);
+  ASSERT_EQ(m.normals.size(), m.vertex_count());
+  for (std::size_t v = 0; v < m.vertex_count(); ++v) {
+    EXPECT_NEAR((m.positions[v] - c).norm(), 0.3, 1e-12);
+    EXPECT_NEAR(m.normals[v].norm(), 1, 1e-12);
+    EXPECT_LT((m.normals[v] - (m.positions[v] - c) / 0.3).norm(), 1e-12);
+  }
+  int with_area = 0;
+  std::map<std::pair<Vec3, Vec3>, int, bool (*)(const std::pair<Vec3, Vec3>&, const std::pair<Vec3, Vec3>&)> edges(
+      [](const std::pair<Vec3, Vec3>& x, const std::pair<Vec3, Vec3>& y) {
+        auto key = [](const std::pair<Vec3, Vec3>& e) {
+          return std::array{e.first.x(), e.first.y(), e.first.z(), e.second.x(), e.second.y(), e.second.z()};
+        };
+        return key(x) < key(y);
+      });
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    const Vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
+               d = m.positions[m.indices[3 * t + 2]];
+    const Vec3 n = (b - a).cross(d - a);
+    if (n.norm() < 1e-12) continue;  // at a pole
+    ++with_area;
+    EXPECT_GT(n.dot((a + b + d) / 3 - c), 0);
+    // Each directed edge once, and its reverse once, where the triangles have area.
+    for (const auto& [p, q] : {std::pair{a, b}, {b, d}, {d, a}}) ++edges[{p, q}];
+  }
+  EXPECT_EQ(with_area, 2 * 10 * (6 - 1)) << "the pole rows' triangles have no area";
+  for (const auto& [e, n] : edges) {
+    EXPECT_EQ(n, 1);
+    EXPECT_EQ(edges.count({e.second, e.first}), 1u) << "closed: every edge has a neighbour";
+  }
+  EXPECT_THROW(sphere_mesh(c, 0, 6, 10), Error);
+  EXPECT_THROW(sphere_mesh(c, 0.3, 2, 10), Error);
+  EXPECT_THROW(sphere_mesh(Vec3(std::nan(""), 0, 0), 0.3), Error);
 }
 
 TEST(BoundingSphere, ContainsEveryPointAndIgnoresNonFinite) {

@@ -1,10 +1,13 @@
 // Renderer tests through EGL llvmpipe (no display, no GPU). If no GL context can be made these
-// FAIL rather than skip: CI has Mesa, so a missing context is a real breakage.
+// FAIL rather than skip: CI has Mesa, so a missing context is a real breakage. Covers the
+// drawing modes and the intersection marks.
 #include "render/renderer.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -244,6 +247,68 @@ TEST(RenderOffscreen, DepthColourOffGivesGrey) {
   sc.view.depth_colour = false;
   // kGrey is a slightly warm grey (0.78, 0.76, 0.72): red - blue stays within ~0.06 of full scale.
   EXPECT_LE(max_chroma(render_offscreen(sc, kW, kH)), 18);
+}
+
+// Pixels of a strong red (the above marks) and a strong blue (the below marks): the grey
+// surfaces, the yellow curve and the green beads are neither.
+bool strong_red(const std::uint8_t* p) { return p[0] > 90 && p[0] > 2.5 * p[1] && p[0] > 2 * p[2]; }
+bool strong_blue(const std::uint8_t* p) { return p[2] > 90 && p[2] > 1.8 * p[0] && p[2] > 1.4 * p[1]; }
+
+// Distance in pixels from (x, y) to the segment between the screen images of a and b.
+double pixels_to_segment(const Camera& cam, const Image& img, int x, int y, const Vec3& a, const Vec3& b) {
+  auto pixel = [&](const Vec3& p) {
+    const Vec2 n = cam.ndc(p);
+    return Vec2((n.x() + 1) / 2 * img.width, (1 - n.y()) / 2 * img.height);
+  };
+  const Vec2 pa = pixel(a), pb = pixel(b), q(x + 0.5, y + 0.5);
+  const double t = std::clamp((q - pa).dot(pb - pa) / (pb - pa).squaredNorm(), 0.0, 1.0);
+  return (pa + t * (pb - pa) - q).norm();
+}
+
+// The two squares crossing in the shadow apart in w, grey, seen from above the crossing: with the
+// intersections on, red and blue pixels appear, all along the crossing (the x axis from -0.8 to
+// 1), and none without.
+TEST(RenderOffscreen, AboveBelowMarksAreVisibleAlongTheCurve) {
+  Scene sc = test::scene_of(test::sheets_apart_in_w());
+  sc.view.depth_colour = false;
+  sc.view.tube_radius = 0.06;  // marks of 0.021, 0.09 from the curve
+  sc.view.trackball = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Vec3::UnitX()) * Eigen::AngleAxisd(0.3, Vec3::UnitY()));
+  const Camera cam = build_scene_geometry(sc, 320.0 / 240).camera;
+  struct Found {
+    int red = 0, blue = 0;
+    double red_from = 1, red_to = 0, blue_from = 1, blue_to = 0;  // their extent along the curve
+  };
+  const Vec3 a(-0.8, 0, 0), b(1, 0, 0);  // the crossing
+  auto find = [&](const Image& img) {
+    Found f;
+    const Vec2 pa = (cam.ndc(a) + Vec2::Ones()) / 2, pb = (cam.ndc(b) + Vec2::Ones()) / 2;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const auto* p = img.pixel(x, y);
+        const bool r = strong_red(p), bl = strong_blue(p);
+        if (!r && !bl) continue;
+        EXPECT_LT(pixels_to_segment(cam, img, x, y, a, b), 16) << "pixel " << x << ", " << y << " is off the curve";
+        const Vec2 q((x + 0.5) / img.width, 1 - (y + 0.5) / img.height);
+        const double t = (q - pa).dot(pb - pa) / (pb - pa).squaredNorm();
+        (r ? f.red : f.blue)++;
+        double& from = r ? f.red_from : f.blue_from;
+        double& to = r ? f.red_to : f.blue_to;
+        from = std::min(from, t);
+        to = std::max(to, t);
+      }
+    return f;
+  };
+  const Found plain = find(render_offscreen(sc, 320, 240));
+  EXPECT_EQ(plain.red, 0);
+  EXPECT_EQ(plain.blue, 0);
+  sc.view.intersections = true;
+  const Image marked = render_offscreen(sc, 320, 240);
+  const Found f = find(marked);
+  EXPECT_GT(f.red, 150);
+  EXPECT_GT(f.blue, 150);
+  EXPECT_GT(f.red_to - f.red_from, 0.8) << "red all along the curve";
+  EXPECT_GT(f.blue_to - f.blue_from, 0.8) << "blue all along the curve";
+  write_png(marked, ::testing::TempDir() + "above_below_marks_test.png");  // to look at
 }
 
 TEST(Renderer, DrawIntoATargetMatchesRenderOffscreen) {

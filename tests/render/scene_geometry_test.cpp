@@ -1,10 +1,15 @@
 // Scene geometry tests: depth colour follows w across objects (R^4) and view depth (R^3), the
-// colour switch, tube building for curves, the camera containing everything drawn.
+// colour switch, tube building for curves, the camera containing everything drawn, the shadow's
+// intersection curves with their above-below marks and pinch points, crossings of curves' images.
 #include "render/scene_geometry.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "knots/knot_diagram.hpp"
 #include "render/test_shapes.hpp"
@@ -135,13 +140,19 @@ TEST(SceneGeometry, IntersectionCurvesMarkTheTrueFourDimensionalPoint) {
   sc.view.intersections = true;
   const SceneGeometry g = build_scene_geometry(sc, 1.0);
   ASSERT_EQ(g.objects.size(), 1u) << "overlays do not count as objects";
-  ASSERT_EQ(g.overlays.size(), 1u);
+  ASSERT_EQ(g.overlays.size(), 2u) << "the curves with their beads, and the above-below marks";
+  EXPECT_TRUE(g.overlays[0].lit);
+  EXPECT_FALSE(g.overlays[1].lit) << "the marks keep their colours whatever the light";
   const IntersectionSummary& s = g.intersections;
   EXPECT_TRUE(s.computed);
   EXPECT_EQ(s.curves, 1);
   EXPECT_EQ(s.true_curves, 1);
   EXPECT_EQ(s.shadow_only_curves, 0);
   EXPECT_EQ(s.true_points, 1);
+  // The segment ends where one square or the other stops: no pinch point.
+  EXPECT_EQ(s.border_ends, 2);
+  EXPECT_EQ(s.pinch_points, 0);
+  EXPECT_EQ(s.branch_points, 0);
   const DrawObject& o = g.overlays[0];
   ASSERT_GT(o.mesh.vertex_count(), 0u);
   ASSERT_EQ(o.colours.size(), o.mesh.vertex_count());
@@ -151,9 +162,183 @@ TEST(SceneGeometry, IntersectionCurvesMarkTheTrueFourDimensionalPoint) {
     if (o.colours[v] == kTrueIntersectionColour)
       nearest_true = std::min(nearest_true, o.mesh.positions[v].norm());
   }
+  for (const Vec3f& c : g.overlays[1].colours) EXPECT_TRUE(c == kAboveColour || c == kBelowColour);
   // The bead (2.5 × half the tube radius, 0.0375) is centred on the origin's shadow.
   EXPECT_LT(nearest_true, 0.06);
-  EXPECT_NE(intersection_text(s).find("1 true (1 true point(s))"), std::string::npos);
+  EXPECT_NE(intersection_text(s).find("1 true (1 true point(s)); 0 pinch point(s), 2 curve end(s) at a border"),
+            std::string::npos)
+      << intersection_text(s);
+}
+
+// The plane of a flat sheet in the shadow: unit normal n and offset c (n·p = c on it).
+struct ShadowPlane {
+  Vec3 n;
+  double c;
+  double distance(const Vec3& p) const { return std::abs(n.dot(p) - c); }
+};
+ShadowPlane plane_of(const Surface<4>& s, int triangle, const Frame<4>& frame) {
+  const Triangle& t = s.triangles[static_cast<std::size_t>(triangle)];
+  const Vec3 a = frame.shadow(s.vertices[t[0]]), b = frame.shadow(s.vertices[t[1]]),
+             c = frame.shadow(s.vertices[t[2]]);
+  const Vec3 n = (b - a).cross(c - a).normalized();
+  return {n, n.dot(a)};
+}
+
+// The overlays' vertices of one colour.
+std::vector<Vec3> vertices_of(const SceneGeometry& g, const Vec3f& colour) {
+  std::vector<Vec3> out;
+  for (const DrawObject& o : g.overlays)
+    for (std::size_t v = 0; v < o.mesh.vertex_count(); ++v)
+      if (o.colours[v] == colour) out.push_back(o.mesh.positions[v]);
+  return out;
+}
+
+// Two squares crossing in the shadow along the x axis, apart in w. The marks are lines on each
+// sheet beside the curve: red on the sheet nearer in w, blue on the other, on both sides of the
+// curve, thinner than the curve's tube and clear of it. Swapping the sheets' w swaps the colours:
+// the colour follows depth, not the order of the sheets. The same holds for the sheets as two
+// surfaces (the finder's pair path) as for one surface (its self path).
+TEST(SceneGeometry, AboveBelowMarksAreRedOnTheNearerSheetAndBlueOnTheFarther) {
+  for (const bool a_nearer : {true, false})
+    for (const bool two_objects : {false, true}) {
+      SCOPED_TRACE(std::string(a_nearer ? "A nearer" : "B nearer") + (two_objects ? ", two objects" : ", one"));
+      const Surface<4> sheets = a_nearer ? test::sheets_apart_in_w(0.5, -0.5) : test::sheets_apart_in_w(-0.5, 0.5);
+      Scene sc;
+      if (two_objects) {
+        const auto [a, b] = test::split_squares(sheets);
+        sc = test::scene_of(a);
+        sc.objects.push_back(test::scene_of(b).objects[0]);
+        sc.objects[1].name = "B";
+      } else {
+        sc = test::scene_of(sheets);
+      }
+      sc.view.intersections = true;
+      const SceneGeometry g = build_scene_geometry(sc, 1.0);
+      const IntersectionSummary& s = g.intersections;
+      EXPECT_EQ(s.curves, 1);
+      EXPECT_EQ(s.shadow_only_curves, 1);
+      EXPECT_EQ(s.true_points, 0);
+      EXPECT_EQ(s.border_ends, 2);
+      EXPECT_EQ(s.pinch_points, 0);
+      const ShadowPlane plane_a = plane_of(sheets, 0, sc.frame), plane_b = plane_of(sheets, 2, sc.frame);
+      const ShadowPlane& near = a_nearer ? plane_a : plane_b;
+      const ShadowPlane& far = a_nearer ? plane_b : plane_a;
+      const double line = 0.5 * sc.view.tube_radius;  // the curve's tube
+      for (const auto& [colour, on, other] : {std::tuple{kAboveColour, near, far}, std::tuple{kBelowColour, far, near}}) {
+        const std::vector<Vec3> mark = vertices_of(g, colour);
+        ASSERT_GT(mark.size(), 0u);
+        int sides[2] = {0, 0};
+        for (const Vec3& p : mark) {
+          EXPECT_LT(on.distance(p), line) << "on its sheet, thinner than the curve's tube";
+          EXPECT_GT(other.distance(p), 1.5 * line) << "beside the curve, clear of its tube";
+          EXPECT_GE(p.x(), -0.8 - line);  // within the crossing's extent, x in [-0.8, 1]
+          EXPECT_LE(p.x(), 1 + line);
+          ++sides[other.n.dot(p) - other.c > 0];
+        }
+        EXPECT_GT(sides[0], 0) << "a line on each side of the curve";
+        EXPECT_GT(sides[1], 0);
+      }
+    }
+}
+
+// Where two sheets truly meet (the planes xy and zw through the origin), their order in w swaps:
+// the red line is on one sheet up to the meeting point and on the other after it.
+TEST(SceneGeometry, AboveBelowMarksSwapSheetsWhereTheSheetsTrulyMeet) {
+  const Surface<4> planes = test::crossing_planes();
+  Scene sc = test::scene_of(planes);
+  sc.frame.rotate(Plane{0, 3}, 0.5);
+  sc.frame.rotate(Plane{1, 2}, 0.35);
+  sc.frame.rotate(Plane{0, 2}, 0.17);
+  sc.view.intersections = true;
+  const SceneGeometry g = build_scene_geometry(sc, 1.0);
+  const ShadowIntersections r = shadow_intersections(planes, sc.frame);
+  const ShadowSegment* met = nullptr;
+  for (const ShadowSegment& s : r.segments)
+    if (s.true_intersection) met = &s;
+  ASSERT_NE(met, nullptr);
+  // Sheet A (triangles 0, 1) is nearer in w on the side of p0 when the depth difference is
+  // positive there; the depths are affine on each plane, so one side of the meet holds for all.
+  ASSERT_LT(met->a, 2);
+  ASSERT_GE(met->b, 2);
+  const Vec3 toward_p0 = met->p0 - met->meet;
+  const bool a_over_at_p0 = met->depth_a0 > met->depth_b0;
+  const ShadowPlane plane_a = plane_of(planes, 0, sc.frame), plane_b = plane_of(planes, 2, sc.frame);
+  const double line = 0.5 * sc.view.tube_radius;
+  int on_a[2] = {0, 0}, on_b[2] = {0, 0};  // red vertices on each sheet, by side of the meet
+  for (const Vec3& p : vertices_of(g, kAboveColour)) {
+    const double along = (p - met->meet).dot(toward_p0.normalized());
+    if (std::abs(along) < line) continue;  // the lines' ends at the meet, within a tube's radius
+    const bool p0_side = along > 0;
+    if (plane_a.distance(p) < line) {
+      ++on_a[p0_side];
+      EXPECT_EQ(p0_side, a_over_at_p0) << "red on sheet A only where A is nearer in w";
+    } else {
+      EXPECT_LT(plane_b.distance(p), line) << "a mark lies on one of the sheets";
+      ++on_b[p0_side];
+      EXPECT_NE(p0_side, a_over_at_p0) << "red on sheet B only where B is nearer in w";
+    }
+  }
+  EXPECT_GT(on_a[a_over_at_p0], 0);
+  EXPECT_GT(on_b[!a_over_at_p0], 0);
+}
+
+// The pinch points of a generic shadow of the Clifford torus x(u, v) = (cos u, sin u, cos v,
+// sin v) / sqrt 2: the shadow ray d (the frame's w axis) lies in the tangent plane where
+// (-sin u, cos u) is parallel to (d0, d1) and (-sin v, cos v) to (d2, d3), two choices each: four
+// Whitney umbrellas, joined in pairs by the two double curves (the paper's Fig. 12, where they
+// are moved until they cancel).
+std::vector<Vec3> clifford_pinch_points(const Frame<4>& frame) {
+  const Vec4 d = frame.matrix().col(3);
+  std::vector<Vec3> out;
+  for (const double du : {0.0, test::kPi})
+    for (const double dv : {0.0, test::kPi}) {
+      const double u = std::atan2(-d[0], d[1]) + du, v = std::atan2(-d[2], d[3]) + dv;
+      out.push_back(frame.shadow(Vec4(std::cos(u), std::sin(u), std::cos(v), std::sin(v)) / std::sqrt(2.0)));
+    }
+  return out;
+}
+
+// In a generic view the finder gives the torus's shadow two open curves. On this symmetric mesh
+// the curves pass exactly through mesh edges of both sheets, where the finder also returns
+// point-like segments, so its strokes are many more than two (dozens, some of no length): the
+// ends are counted with those left out, and come to the four the geometry says, a bead on each,
+// within a few hundredths of the smooth torus's pinch points (the mesh spacing is 0.09).
+TEST(SceneGeometry, PinchPointsOfTheCliffordTorusAreBeadedAtTheEndsOfItsCurves) {
+  for (const auto& turns : {std::vector<std::pair<Plane, double>>{{Plane{0, 3}, 0.52}, {Plane{1, 3}, 0.35}},
+                            {{Plane{0, 3}, 0.9}, {Plane{2, 3}, 0.4}, {Plane{1, 2}, 0.3}}}) {
+    Scene sc = test::scene_of(test::clifford_torus(48));
+    for (const auto& [plane, angle] : turns) sc.frame.rotate(plane, angle);
+    sc.view.intersections = true;
+    const SceneGeometry g = build_scene_geometry(sc, 1.0);
+    const IntersectionSummary& s = g.intersections;
+    EXPECT_EQ(s.curves, 2);
+    EXPECT_EQ(s.true_curves, 0);
+    EXPECT_EQ(s.pinch_points, 4);
+    EXPECT_EQ(s.border_ends, 0) << "the torus has no border";
+    EXPECT_EQ(s.branch_points, 0);
+    const ShadowIntersections r = shadow_intersections(std::get<Surface<4>>(sc.objects[0].shape), sc.frame);
+    EXPECT_GT(r.strokes.size(), 4u) << "the finder's strokes are broken at point-like segments";
+    for (const ShadowCurve& c : r.curves) EXPECT_FALSE(c.closed);
+    // Each analytic pinch point has a bead, and every bead vertex belongs to one of them.
+    const std::vector<Vec3> pinches = clifford_pinch_points(sc.frame);
+    const std::vector<Vec3> bead = vertices_of(g, kPinchPointColour);
+    ASSERT_GT(bead.size(), 0u);
+    std::vector<Eigen::Vector3d> centre(4, Eigen::Vector3d::Zero());
+    std::vector<int> count(4, 0);
+    for (const Vec3& p : bead) {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < 4; ++k)
+        if ((p - pinches[k]).norm() < (p - pinches[best]).norm()) best = k;
+      centre[best] += p;
+      ++count[best];
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+      ASSERT_GT(count[k], 0) << "no bead at pinch point " << k;
+      EXPECT_EQ(count[k], count[0]) << "one bead each";
+      EXPECT_LT((centre[k] / count[k] - pinches[k]).norm(), 0.03);
+    }
+    EXPECT_NE(intersection_text(s).find("; 4 pinch point(s)"), std::string::npos) << intersection_text(s);
+  }
 }
 
 TEST(SceneGeometry, IntersectionCurvesOfTheCliffordTorusAreShadowOnly) {
@@ -162,12 +347,16 @@ TEST(SceneGeometry, IntersectionCurvesOfTheCliffordTorusAreShadowOnly) {
   sc.frame.rotate(Plane{1, 3}, 0.35);
   sc.view.intersections = true;
   const SceneGeometry g = build_scene_geometry(sc, 1.0);
-  ASSERT_EQ(g.overlays.size(), 1u);
+  ASSERT_EQ(g.overlays.size(), 2u);
   EXPECT_EQ(g.intersections.true_curves, 0) << "the torus is embedded in R^4";
   EXPECT_GE(g.intersections.shadow_only_curves, 1) << "but its turned shadow crosses itself";
   EXPECT_GT(g.intersections.length, 0.5);
   EXPECT_EQ(g.intersections.coplanar_pairs, 0);
-  for (const Vec3f& c : g.overlays[0].colours) EXPECT_EQ(c, kShadowOnlyColour);
+  for (const DrawObject& o : g.overlays)
+    for (const Vec3f& c : o.colours)
+      EXPECT_TRUE(c == kShadowOnlyColour || c == kAboveColour || c == kBelowColour || c == kPinchPointColour);
+  EXPECT_FALSE(vertices_of(g, kAboveColour).empty());
+  EXPECT_FALSE(vertices_of(g, kBelowColour).empty());
 }
 
 // Where a point is drawn on the screen (normalised device x, y).

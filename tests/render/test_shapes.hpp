@@ -1,9 +1,11 @@
 // Small shapes built inside the render tests, so they depend on no generator: a Clifford torus,
-// a trefoil, a UV sphere, a square tilted into w, and image comparison helpers.
+// a trefoil, a UV sphere, a square tilted into w, crossing squares, and image comparison helpers.
 #pragma once
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "io/image.hpp"
 #include "io/scene.hpp"
@@ -89,6 +91,41 @@ inline Surface<4> crossing_planes() {
     s.vertices.push_back(Vec4(0, 0, u + b, v - a));
   s.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
   return s;
+}
+
+// Two unit squares whose shadows cross along the x axis without meeting in R^4: sheet A in the
+// plane z = 0 at w = w_a, sheet B in the plane y = 0 at w = w_b, shifted along x so that the
+// crossing ends on A's border at one end and on B's at the other. Triangles 0-1 are A's, 2-3 B's.
+inline Surface<4> sheets_apart_in_w(double w_a = 0.5, double w_b = -0.5) {
+  Surface<4> s;
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.push_back(Vec4(u, v, 0, w_a));
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.push_back(Vec4(u + 0.2, 0, v, w_b));
+  s.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}};
+  return s;
+}
+
+// The two sheets of `s` (vertices 0-3 and 4-7 of a two-square surface) as surfaces of their own.
+inline std::pair<Surface<4>, Surface<4>> split_squares(const Surface<4>& s) {
+  Surface<4> a, b;
+  a.vertices.assign(s.vertices.begin(), s.vertices.begin() + 4);
+  b.vertices.assign(s.vertices.begin() + 4, s.vertices.begin() + 8);
+  a.triangles = b.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return {a, b};
+}
+
+// A square of R^3 facing +z at height z, centred at (cx, 0), half-width h, in one plain colour.
+inline SceneObject flat_square(double cx, double z, double h, const Vec3f& colour, const std::string& name) {
+  Surface<3> s;
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.emplace_back(cx + h * u, h * v, z);
+  s.triangles = {{0, 1, 2}, {0, 2, 3}};
+  SceneObject o;
+  o.name = name;
+  o.shape = s;
+  o.colour = colour;
+  return o;
 }
 
 inline Scene scene_of(Shape shape) {
