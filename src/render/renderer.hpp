@@ -1,7 +1,9 @@
 // Renderer: draws a Scene with OpenGL 3.3 core into the current framebuffer. R^4 objects are
 // projected by the scene's Frame<4> to R^3 and coloured by 4D depth; R^3 objects are drawn as they
-// are, coloured by view depth. Curves become lit tubes; surfaces are lit two-sided.
+// are, coloured by view depth. Curves become lit tubes; surfaces are lit two-sided, see-through
+// when view.opacity < 1.
 #pragma once
+#include <cstddef>
 #include <memory>
 
 #include "core/vec.hpp"
@@ -11,6 +13,16 @@
 #include "render/scene_geometry.hpp"
 
 namespace s4d {
+
+// What one Renderer::draw sent to the GPU. A live simulation moves the vertices every frame but
+// rarely changes the triangles, so index buffers are kept while their indices are unchanged.
+struct UploadStats {
+  std::size_t vertex_bytes = 0;  // vertex data (positions, normals, colours) sent
+  std::size_t index_bytes = 0;   // index data sent
+  int vertex_uploads = 0;        // vertex buffers filled
+  int index_uploads = 0;         // index buffers filled (a see-through surface re-sorted counts)
+  int meshes = 0;                // meshes drawn (objects and overlays, empty ones included)
+};
 
 // Needs a current OpenGL 3.3 core context for its whole life (GLFW window or OffscreenContext).
 class Renderer {
@@ -29,6 +41,8 @@ class Renderer {
   const Camera& camera() const;
   // The intersection curves of the last draw (computed = false unless view.intersections).
   const IntersectionSummary& intersections() const;
+  // What the last draw uploaded.
+  const UploadStats& uploads() const;
 
  private:
   struct Impl;

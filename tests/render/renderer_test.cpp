@@ -1,6 +1,6 @@
 // Renderer tests through EGL llvmpipe (no display, no GPU). If no GL context can be made these
 // FAIL rather than skip: CI has Mesa, so a missing context is a real breakage. Covers the
-// drawing modes and the intersection marks.
+// drawing modes, see-through surfaces, the intersection marks and what each draw uploads.
 #include "render/renderer.hpp"
 
 #include <gtest/gtest.h>
@@ -249,6 +249,108 @@ TEST(RenderOffscreen, DepthColourOffGivesGrey) {
   EXPECT_LE(max_chroma(render_offscreen(sc, kW, kH)), 18);
 }
 
+// A square of R^4 facing +z at height z and depth w, centred at (cx, 0), half-width 0.6.
+Surface<4> square_at(double cx, double z, double w) {
+  Surface<4> s;
+  for (const auto& [u, v] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}})
+    s.vertices.emplace_back(cx + 0.6 * u, 0.6 * v, z, w);
+  s.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return s;
+}
+
+// A square in front (z = 0.5, nearer in w: red) of another (z = -0.5, farther in w: blue),
+// overlapping in the middle columns, drawn flat (a pixel is its colour blended, nothing else).
+// Returns the mean colour (0-255) of the overlap and of the part where only the front one is.
+struct OverlapColours {
+  Vec3f overlap, front_only;
+};
+OverlapColours overlap_colours(double opacity, bool front_first, bool one_object) {
+  Surface<4> front = square_at(-0.3, 0.5, 1), back = square_at(0.3, -0.5, -1);
+  Scene sc;
+  if (one_object) {  // one surface with both sheets: its triangles are sorted, not the objects
+    Surface<4> both = front_first ? front : back;
+    const Surface<4>& second = front_first ? back : front;
+    both.vertices.insert(both.vertices.end(), second.vertices.begin(), second.vertices.end());
+    both.triangles.insert(both.triangles.end(), {{4, 5, 6}, {4, 6, 7}});
+    sc = test::scene_of(both);
+  } else {
+    sc = test::scene_of(front_first ? front : back);
+    sc.objects.push_back(test::scene_of(front_first ? back : front).objects[0]);
+    sc.objects[1].name = "second";
+  }
+  sc.view.shadow = true;
+  sc.view.opacity = opacity;
+  const Image img = render_offscreen(sc, 320, 240);
+  const Camera cam = build_scene_geometry(sc, 320.0 / 240).camera;
+  auto mean = [&](double x0, double x1) {  // over x in [x0, x1], |y| < 0.3 on the front square
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    int n = 0;
+    const Vec2 lo = cam.ndc(Vec3(x0, -0.3, 0.5)), hi = cam.ndc(Vec3(x1, 0.3, 0.5));
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const double nx = 2.0 * (x + 0.5) / img.width - 1, ny = 1 - 2.0 * (y + 0.5) / img.height;
+        if (nx < lo.x() || nx > hi.x() || ny < lo.y() || ny > hi.y()) continue;
+        const auto* p = img.pixel(x, y);
+        sum += Eigen::Vector3d(p[0], p[1], p[2]);
+        ++n;
+      }
+    EXPECT_GT(n, 100);
+    return Vec3f((sum / std::max(n, 1)).cast<float>());
+  };
+  // The front square spans x in [-0.9, 0.3], the back one [-0.3, 0.9], seen smaller by
+  // perspective (its near edge at x = -0.2 on the front square): [-0.1, 0.1] is in both,
+  // [-0.8, -0.4] in front only.
+  return {mean(-0.1, 0.1), mean(-0.8, -0.4)};
+}
+
+// At opacity 0.4 the overlap mixes the front red with the back blue as "over" blending in depth
+// order does (0.4 front + 0.6 (0.4 back + 0.6 background)); at 1 the back one is hidden. The
+// result depends neither on the order of the objects in the scene nor on that of a surface's
+// triangles: they are drawn far to near.
+TEST(RenderOffscreen, SeeThroughSurfacesShowTheSheetBehind) {
+  const Vec3f bg = Scene{}.view.background * 255;
+  const Vec3f red = map_colour(ColourMap::kCoolWarm, 1) * 255, blue = map_colour(ColourMap::kCoolWarm, 0) * 255;
+  const OverlapColours opaque = overlap_colours(1.0, true, false);
+  EXPECT_LT((opaque.overlap - red).cwiseAbs().maxCoeff(), 3) << "the back square is hidden";
+  for (const bool one_object : {false, true})
+    for (const bool front_first : {true, false}) {
+      SCOPED_TRACE(std::string(one_object ? "one object" : "two objects") + (front_first ? ", front first" : ", back first"));
+      const OverlapColours c = overlap_colours(0.4, front_first, one_object);
+      const Vec3f mixed = 0.4f * red + 0.6f * (0.4f * blue + 0.6f * bg);
+      EXPECT_LT((c.overlap - mixed).cwiseAbs().maxCoeff(), 4)
+          << "the blue square shows through: " << c.overlap.transpose() << " vs " << mixed.transpose();
+      const Vec3f alone = 0.4f * red + 0.6f * bg;
+      EXPECT_LT((c.front_only - alone).cwiseAbs().maxCoeff(), 4) << c.front_only.transpose();
+    }
+}
+
+// Tubes stay opaque in front of a see-through surface.
+TEST(RenderOffscreen, TubesStayOpaqueWhenSurfacesAreSeeThrough) {
+  Scene sc;
+  sc.objects.push_back(test::flat_square(0, -0.5, 1.0, Vec3f(0, 1, 0), "back"));
+  Curve<3> bar;
+  bar.components.push_back({{Vec3(-0.8, 0, 0.3), Vec3(0.8, 0, 0.3)}, false});
+  SceneObject tube;
+  tube.name = "bar";
+  tube.shape = bar;
+  tube.colour = Vec3f(1, 0, 0);
+  sc.objects.push_back(tube);
+  sc.view.depth_colour = false;
+  sc.view.shadow = true;
+  sc.view.tube_radius = 0.1;
+  const Image opaque = render_offscreen(sc, 160, 120);
+  sc.view.opacity = 0.3;
+  const Image clear = render_offscreen(sc, 160, 120);
+  const auto* centre_opaque = opaque.pixel(80, 60);
+  const auto* centre_clear = clear.pixel(80, 60);
+  EXPECT_GT(centre_clear[0], 250) << "the tube is drawn in full";
+  EXPECT_EQ(centre_clear[1], centre_opaque[1]);
+  const Vec2 above = build_scene_geometry(sc, 160.0 / 120).camera.ndc(Vec3(0, 0.5, -0.5));
+  const int ax = static_cast<int>((above.x() + 1) / 2 * 160), ay = static_cast<int>((1 - above.y()) / 2 * 120);
+  EXPECT_GT(opaque.pixel(ax, ay)[1], 250) << "the square, above the tube";
+  EXPECT_LT(clear.pixel(ax, ay)[1], 0.5 * opaque.pixel(ax, ay)[1]) << "fades";
+}
+
 // Pixels of a strong red (the above marks) and a strong blue (the below marks): the grey
 // surfaces, the yellow curve and the green beads are neither.
 bool strong_red(const std::uint8_t* p) { return p[0] > 90 && p[0] > 2.5 * p[1] && p[0] > 2 * p[2]; }
@@ -309,6 +411,67 @@ TEST(RenderOffscreen, AboveBelowMarksAreVisibleAlongTheCurve) {
   EXPECT_GT(f.red_to - f.red_from, 0.8) << "red all along the curve";
   EXPECT_GT(f.blue_to - f.blue_from, 0.8) << "blue all along the curve";
   write_png(marked, ::testing::TempDir() + "above_below_marks_test.png");  // to look at
+}
+
+// A second draw of the same mesh with moved vertices sends the vertices again but no indices;
+// new triangles are sent; the picture drawn from the kept buffers is the one a fresh renderer
+// draws. A see-through surface's sorted triangles are sent when their order changes only.
+TEST(Renderer, UploadsOnlyWhatChanged) {
+  Scene first = test::scene_of(test::clifford_torus(24));
+  first.frame.rotate(Plane{0, 3}, 0.5);
+  Scene moved = first;
+  moved.frame.rotate(Plane{1, 3}, 0.4);  // every vertex moves, the triangles stay
+  Scene curves = moved;
+  curves.view.intersections = true;
+  Scene remeshed = moved;
+  remeshed.objects[0].shape = test::clifford_torus(20);
+  Scene clear = remeshed;
+  clear.view.opacity = 0.5;
+  // The pictures a fresh renderer draws, made first: render_offscreen makes its own context.
+  const Image expect_moved = render_offscreen(moved, 96, 72);
+  const Image expect_remeshed = render_offscreen(remeshed, 96, 72);
+  const Image expect_clear = render_offscreen(clear, 96, 72);
+
+  OffscreenContext ctx;
+  RenderTarget target(96, 72, 4);
+  Renderer r;
+  auto draw = [&](const Scene& sc) {
+    target.bind();
+    r.draw(sc, 96, 72);
+    return r.uploads();
+  };
+  const std::size_t vertex_bytes = 24 * 24 * 9 * sizeof(float);
+  const std::size_t index_bytes = 2 * 24 * 24 * 3 * sizeof(std::uint32_t);
+  UploadStats u = draw(first);
+  EXPECT_EQ(u.meshes, 1);
+  EXPECT_EQ(u.vertex_uploads, 1);
+  EXPECT_EQ(u.vertex_bytes, vertex_bytes);
+  EXPECT_EQ(u.index_uploads, 1);
+  EXPECT_EQ(u.index_bytes, index_bytes);
+
+  u = draw(moved);
+  EXPECT_EQ(u.vertex_uploads, 1);
+  EXPECT_EQ(u.vertex_bytes, vertex_bytes);
+  EXPECT_EQ(u.index_uploads, 0);
+  EXPECT_EQ(u.index_bytes, 0u);
+  EXPECT_EQ(test::differing_fraction(target.resolve_and_read(), expect_moved, 0), 0.0);
+
+  u = draw(curves);  // the overlays appear (curves, marks): their buffers are new, then kept
+  EXPECT_EQ(u.meshes, 3);
+  EXPECT_EQ(u.index_uploads, 2);
+  EXPECT_EQ(draw(curves).index_uploads, 0) << "the same curves again";
+
+  u = draw(remeshed);  // new triangles, and the overlays' buffers freed
+  EXPECT_EQ(u.meshes, 1);
+  EXPECT_EQ(u.index_uploads, 1);
+  EXPECT_EQ(u.index_bytes, 2 * 20 * 20 * 3 * sizeof(std::uint32_t));
+  EXPECT_EQ(test::differing_fraction(target.resolve_and_read(), expect_remeshed, 0), 0.0);
+
+  // See-through: the triangles sorted far to near are a new order once, then the same while
+  // nothing moves.
+  EXPECT_EQ(draw(clear).index_uploads, 1);
+  EXPECT_EQ(draw(clear).index_uploads, 0);
+  EXPECT_EQ(test::differing_fraction(target.resolve_and_read(), expect_clear, 0), 0.0);
 }
 
 TEST(Renderer, DrawIntoATargetMatchesRenderOffscreen) {
