@@ -30,4 +30,19 @@ std::string describe_scene(const Scene& scene, const Image& image, double render
   return out.str();
 }
 
+std::string verdict_line(const RunFacts& f) {
+  auto g = [](double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3g", x);
+    return std::string(b);
+  };
+  std::ostringstream out;
+  out << (f.pass() ? "PASS " : "FAIL ") << f.name << ": " << f.verdict.detail << "; " << f.intersections
+      << " true intersections in " << f.checks << " states checked (min gap " << g(f.min_gap) << ", hard layer "
+      << g(f.model.hard_thickness) << "); " << f.model.vertices << " vertices, " << f.steps << " steps, "
+      << g(f.ms_per_step) << " ms/step, " << f.warnings.rollbacks << " rollbacks, " << f.warnings.global_freezes
+      << " global freezes";
+  return out.str();
+}
+
 }  // namespace s4d::cli
