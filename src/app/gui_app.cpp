@@ -159,52 +159,68 @@ struct Routing {
 void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, const Vec2& window,
                  const Camera& camera) {
   const ImGuiIO& io = ImGui::GetIO();
-  Tool& tool = model.grab;
-  const bool touch = model.tool == ToolChoice::kTouch;
+  Session& session = model.session;
+  Tool* tool = model.active_tool();
   if (!io.WantTextInput) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE) || in.key_pressed(GLFW_KEY_ESCAPE)) {
-      if (model.sketching()) model.status = "";
-      model.tool = ToolChoice::kTouch;
+    if (in.key_pressed(GLFW_KEY_ESCAPE) && !(tool && tool->key(ToolKey::kEscape, ti, session))) {
+      if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
     }
     if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
     if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
-    if (in.key_pressed(GLFW_KEY_SPACE) && model.session.snapshot()) {
-      const bool playing = model.session.snapshot()->status.playing;
-      model.session.send(live_command(playing ? LiveCode::kPause : LiveCode::kPlay));
+    if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
+      const bool playing = session.snapshot()->status.playing;
+      session.send(live_command(playing ? LiveCode::kPause : LiveCode::kPlay));
       model.status = playing ? "paused (Space plays)" : "playing (Space pauses)";
     }
-    if (touch && in.key_pressed(GLFW_KEY_TAB)) tool.key(ToolKey::kTab, ti, model.session);
-    if (touch && in.key_pressed(GLFW_KEY_P)) tool.key(ToolKey::kPin, ti, model.session);
+    if (!r.tool_drag) {
+      if (in.key_pressed(GLFW_KEY_T)) model.choose(ToolChoice::kTouch);
+      if (in.key_pressed(GLFW_KEY_E)) model.choose(ToolChoice::kExplore);
+      if (in.key_pressed(GLFW_KEY_R)) model.choose(ToolChoice::kSketchRibbon);
+      if (in.key_pressed(GLFW_KEY_K)) {
+        model.choose(ToolChoice::kSketchKnot);
+        model.status = kSketchHelp;
+      }
+    }
+    tool = model.active_tool();
+    if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
+    if (tool && in.key_pressed(GLFW_KEY_P)) tool->key(ToolKey::kPin, ti, session);
   }
+  if (tool) tool->update(ti, session);
   const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
   if (in.released(0) || !in.down(0)) {
-    if (r.tool_drag) tool.release(ti, model.session);
+    if (r.tool_drag && tool) tool->release(ti, session);
     r.tool_drag = r.view_drag = false;
   }
-  if (captured) return;
-  if (in.wheel() != 0 && !(touch && tool.wheel(in.wheel(), ti, model.session))) model.view.scroll(in.wheel());
-  if (in.pressed(1) && !model.sketching()) {
-    if (!change_crossing_at(model, camera, in.cursor(), window) && touch) tool.right_click(ti, model.session);
+  if (!captured) {
+    if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
+    if (in.pressed(1) && !model.sketching()) {
+      if (!change_crossing_at(model, camera, in.cursor(), window) && tool) tool->right_click(ti, session);
+    }
+    if (!model.sketching()) {  // while sketching a knot the left button draws (handle_sketch)
+      if (in.pressed(0)) {
+        // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
+        // "below"; otherwise a press on a surface goes to the tool.
+        const bool navigate = (in.shift() && model.tool != ToolChoice::kSketchRibbon) || in.ctrl();
+        r.tool_drag = tool && !navigate && tool->press(ti, session);
+        r.view_drag = !r.tool_drag;
+      } else if (in.down(0) && r.tool_drag) {
+        tool->drag(ti, session);
+      } else if (in.down(0) && r.view_drag) {
+        const Vec2 d = in.cursor_delta();
+        const DragMode mode = in.shift() ? DragMode::kRotateW : in.ctrl() ? DragMode::kRotateZW : DragMode::kTrackball;
+        model.view.drag(mode, d.x(), d.y(), window.y());
+      } else if (!in.down(0) && tool) {
+        tool->hover(ti, session);
+      }
+    }
   }
-  if (model.sketching()) return;  // the left button draws (handle_sketch)
-  if (in.pressed(0)) {
-    // Shift and Ctrl turn the view (in 4D); a plain or Alt press on a surface takes hold.
-    const bool navigate = in.shift() || in.ctrl();
-    r.tool_drag = touch && !navigate && tool.press(ti, model.session);
-    r.view_drag = !r.tool_drag;
-  } else if (in.down(0) && r.tool_drag) {
-    tool.drag(ti, model.session);
-  } else if (in.down(0) && r.view_drag) {
-    const Vec2 d = in.cursor_delta();
-    const DragMode mode = in.shift() ? DragMode::kRotateW : in.ctrl() ? DragMode::kRotateZW : DragMode::kTrackball;
-    model.view.drag(mode, d.x(), d.y(), window.y());
-  } else if (!in.down(0) && touch) {
-    tool.hover(ti, model.session);
-  }
-  if (touch) {
-    const std::string m = tool.take_message();
+  if (tool) {
+    const std::string m = tool->take_message();
     if (!m.empty()) model.status = m;
   }
+  // The explorer's passes as sound: high above in w, low below.
+  for (const SceneEvent& e : model.explore.take_new_passes())
+    if (model.audio) model.audio->play(e.kind == kEventPassedAbove ? CueKind::curve_above : CueKind::curve_below);
 }
 
 // [SECTION] scripted commands
@@ -254,6 +270,20 @@ void dump_state(GuiModel& model, const std::string& path) {
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
   j["frame"] = frame;
+  j["tool"] = model.active_tool() ? model.active_tool()->name() : "Sketch a knot";
+  j["objects"] = model.scene().objects.size();
+  Json passes = Json::array();
+  for (const SceneEvent& e : model.explore.passes()) passes.push_back(e.kind == kEventPassedAbove ? "above" : "below");
+  j["explore_passes"] = passes;
+  if (const HapticSnapshot* snap = s.snapshot()) {
+    j["exploring"] = snap->status.exploring;
+    j["probe_w"] = snap->status.probe_w;
+  }
+  if (const SketchedRibbon* r = model.ribbon.last()) {
+    Json ps = Json::array();
+    for (const RibbonPassage& p : r->passages) ps.push_back(p.below ? "below" : "above");
+    j["ribbon_passages"] = ps;
+  }
   j["hits_under_cursor"] = model.grab.hits().size();
   j["sheet"] = model.grab.sheet();
   std::ofstream out(path);
@@ -282,6 +312,19 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
     s.set_mapping(m);
     sent_mapping = m;
   }
+}
+
+// The smallest ball of the two's centres' kind holding both (the view keeps what it showed).
+ViewFit enclosing(const ViewFit& a, const ViewFit& b) {
+  if (!(a.radius > 0)) return b;
+  if (!(b.radius > 0)) return a;
+  const double d = (b.centre - a.centre).norm();
+  if (d + b.radius <= a.radius) return a;
+  if (d + a.radius <= b.radius) return b;
+  ViewFit f;
+  f.radius = 0.5 * (d + a.radius + b.radius);
+  f.centre = a.centre + (f.radius - a.radius) / d * (b.centre - a.centre);
+  return f;
 }
 
 // The view's ball in the shadow: a ball of R^4 is seen through the frame (its shadow is a ball
@@ -343,6 +386,7 @@ int run_gui_app(const GuiOptions& options) {
     SketchTool sketch;
     HapticsWindow haptics;
     GuiModel model;
+    model.audio = std::make_unique<AudioPlayer>();
     model.session_options.device = options.device.empty() ? "mouse" : options.device;
     Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
     if (!model.error.empty() && !options.open_spec.empty()) {
@@ -356,6 +400,7 @@ int run_gui_app(const GuiOptions& options) {
     DeviceMapping sent_mapping;
     sent_mapping.metres_per_unit = -1;
     std::vector<std::string> shots, dumps;
+    std::size_t objects_seen = model.scene().objects.size();
     for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
       glfwPollEvents();
       for (const InputEvent& e : input.begin_frame(frame)) {
@@ -375,6 +420,10 @@ int run_gui_app(const GuiOptions& options) {
         model.fit = fit_of(model.scene());
       }
       model.session.refresh();
+      if (model.scene().objects.size() != objects_seen) {  // a sketched ribbon: keep it in view
+        objects_seen = model.scene().objects.size();
+        model.fit = enclosing(model.fit, fit_of(model.scene()));
+      }
       model.view.apply_to(model.scene());
       frame_the_fit(model);
 
@@ -395,9 +444,9 @@ int run_gui_app(const GuiOptions& options) {
         haptics.open() = true;
       }
       haptics.draw(model.session);
-      if (model.tool == ToolChoice::kTouch) {
+      if (Tool* tool = model.active_tool()) {
         Overlay overlay;
-        model.grab.overlay(overlay, model.session);
+        tool->overlay(overlay, model.session);
         draw_overlay(overlay, camera, win);
       }
       ImGui::Render();

@@ -135,6 +135,7 @@ void Panels::draw(GuiModel& model, float fps) {
   scene_panel(model);
   simulation_panel(model);
   scenario_banner(model);
+  ribbon_panel(model);
   generator_dialog(model);
   dialogs(model);
 }
@@ -164,27 +165,39 @@ void Panels::menu_bar(GuiModel& model) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Tools")) {
-    if (ImGui::MenuItem("Touch (grab and pull)", nullptr, model.tool == ToolChoice::kTouch)) {
-      model.tool = ToolChoice::kTouch;
-      model.status = model.grab.help();
-    }
+    if (ImGui::MenuItem("Touch (grab and pull)", "T", model.tool == ToolChoice::kTouch)) model.choose(ToolChoice::kTouch);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("left-drag a surface: a rubber band pulls the vertex under the cursor (Alt: along w);\n"
                         "Tab: the next sheet under the cursor; P or right click: pin / unpin;\n"
                         "the wheel while holding: the hand in depth. On empty space the drag turns the view.");
+    if (ImGui::MenuItem("Explore (probe and sound)", "E", model.tool == ToolChoice::kExplore))
+      model.choose(ToolChoice::kExplore);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("press on a surface of R^4 and move: the probe keeps to its sheet through the shadow's\n"
+                        "self-intersections, the hand feels the navigation spring, and each curve passed\n"
+                        "sounds: high where the probe's sheet is above in w, low where it is below\n"
+                        "(also: shadow4d explore SCENE --through ...)");
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Create")) {
     bool sketching = model.sketching();
-    if (ImGui::MenuItem("Sketch a knot", "Esc stops", &sketching)) {
-      model.tool = sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch;
-      model.status = sketching ? kSketchHelp : "";
+    if (ImGui::MenuItem("Sketch a knot", "K", &sketching)) {
+      model.choose(sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch);
+      if (sketching) model.status = kSketchHelp;
     }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("draw a closed curve with the left button in the plane facing you;\n"
                         "where it crosses what is drawn it passes over, or under with shift held.\n"
                         "It becomes a knot of R^3, named live in the Scene panel.\n"
                         "(also: shadow4d knot sketch STROKE --knot --out KNOT)");
+    bool ribbon = model.tool == ToolChoice::kSketchRibbon;
+    if (ImGui::MenuItem("Sketch a ribbon", "R", &ribbon)) model.choose(ribbon ? ToolChoice::kSketchRibbon : ToolChoice::kTouch);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("draw a ribbon's centre line with the left button on the plane facing you (wheel: its\n"
+                        "depth); where it passes another surface's shadow it goes above in w, or below with\n"
+                        "shift held. It is smoothed in w keeping every choice, checked to be embedded and\n"
+                        "simulated: above then below through a sphere links them.\n"
+                        "(also: shadow4d sketch-ribbon SCENE STROKE --out OUT.json)");
     ImGui::Separator();
     for (const auto& g : generator_catalogue()) {
       const std::string label = g.name + (g.surface ? "  (surface, R^" : "  (curve, R^") +
@@ -210,7 +223,7 @@ void Panels::menu_bar(GuiModel& model) {
 // [SECTION] View panel
 void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 470), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 560), ImGuiCond_FirstUseEver);
   ImGui::Begin("View");
   ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
   ImGui::Separator();
@@ -240,6 +253,9 @@ void Panels::view_panel(GuiModel& model, float fps) {
   float radius = static_cast<float>(v.tube_radius);
   if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
     v.tube_radius = radius;
+  float opacity = static_cast<float>(v.opacity);
+  if (ImGui::SliderFloat("opacity", &opacity, 0.05f, 1.0f, "%.2f")) v.opacity = opacity;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("below 1 a sheet behind shows through the one in front");
   ImGui::Checkbox("intersections and crossings", &v.intersections);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
@@ -250,13 +266,22 @@ void Panels::view_panel(GuiModel& model, float fps) {
     ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
     for (const std::string& code : model.intersections.gauss_codes) ImGui::TextWrapped("%s", code.c_str());
   }
+  if (model.audio) {
+    ImGui::Separator();
+    bool mute = model.audio->muted();
+    if (ImGui::Checkbox("mute", &mute)) model.audio->set_mute(mute);
+    ImGui::SameLine();
+    float volume = model.audio->volume();
+    if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) model.audio->set_volume(volume);
+    ImGui::TextDisabled("%s", model.audio->status().c_str());
+  }
   ImGui::End();
 }
 
 // [SECTION] Scene panel
 void Panels::scene_panel(GuiModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(10, 510), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 240), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(10, 600), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 190), ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
   Scene& scene = model.scene();
   if (scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
@@ -441,6 +466,25 @@ void Panels::scenario_banner(GuiModel& model) {
     ImGui::TextWrapped("%s", c.verdict->detail.c_str());
   }
   ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+// The ribbon tool's options, while it is the tool.
+void Panels::ribbon_panel(GuiModel& model) {
+  if (model.tool != ToolChoice::kSketchRibbon) return;
+  ImGui::SetNextWindowPos(ImVec2(350, ImGui::GetIO().DisplaySize.y - 150), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Ribbon", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  RibbonSketchOptions& o = model.ribbon.options;
+  float width = static_cast<float>(o.width);
+  if (ImGui::SliderFloat("width", &width, 0.0f, 1.0f, width > 0 ? "%.3f" : "from the view")) o.width = width;
+  ImGui::Checkbox("closed (a loop)", &o.closed);
+  ImGui::SliderInt("across", &o.across, 2, 8);
+  if (const SketchedRibbon* r = model.ribbon.last()) {
+    ImGui::Text("last: %zu rows, length %.2f, %zu passage(s)", r->w.size(), r->length, r->passages.size());
+    for (const RibbonPassage& p : r->passages)
+      ImGui::BulletText("%s %s (gap %.3f)", p.below ? "below" : "above",
+                        p.surface < 0 ? "itself" : "another surface", p.gap);
+  }
   ImGui::End();
 }
 

@@ -10,7 +10,10 @@
 #include "app/file_browser.hpp"
 #include "app/knot_names.hpp"
 #include "app/view_state.hpp"
+#include "audio/audio_player.hpp"
+#include "interact/explore_tool.hpp"
 #include "interact/grab_tool.hpp"
+#include "interact/ribbon_tool.hpp"
 #include "interact/session.hpp"
 #include "io/scene.hpp"
 #include "render/scene_geometry.hpp"
@@ -21,7 +24,7 @@ namespace s4d {
 inline constexpr const char* kSketchHelp =
     "sketch: drag to draw a closed curve; hold shift where it passes under; Esc stops";
 
-enum class ToolChoice { kTouch, kSketchKnot };
+enum class ToolChoice { kTouch, kExplore, kSketchRibbon, kSketchKnot };
 
 // How the view frames the document: a ball fixed when it opens (its 4D centre is seen through the
 // frame), so the picture holds still while the simulation moves the objects under the hand.
@@ -49,12 +52,29 @@ struct GuiModel {
   // [tools]
   ToolChoice tool = ToolChoice::kTouch;
   GrabTool grab;
+  ExploreTool explore;
+  RibbonTool ribbon;
   Curve<3> last_stroke;        // the last sketch's stroke (stroke_as_curve), for File > Save
   // [drawn]
   IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
   int created = 0;             // counter for unique object names
 
+  std::unique_ptr<AudioPlayer> audio;  // the cues of exploring (silent when no device)
+
   Scene& scene() { return session.scene(); }
+  // The tool the mouse drives now; nullptr while sketching a knot (the window's own stroke).
+  Tool* active_tool() {
+    switch (tool) {
+      case ToolChoice::kTouch: return &grab;
+      case ToolChoice::kExplore: return &explore;
+      case ToolChoice::kSketchRibbon: return &ribbon;
+      default: return nullptr;
+    }
+  }
+  void choose(ToolChoice t) {
+    tool = t;
+    if (Tool* a = active_tool()) status = a->help();
+  }
   bool sketching() const { return tool == ToolChoice::kSketchKnot; }
 };
 
@@ -77,6 +97,7 @@ class Panels {
   void scene_panel(GuiModel& model);
   void simulation_panel(GuiModel& model);
   void scenario_banner(GuiModel& model);
+  void ribbon_panel(GuiModel& model);
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);

@@ -26,8 +26,18 @@ struct SceneCommand {
   double x[20] = {};
 };
 
+// Something the hand met, for sound cues and marks (the explorer passing an intersection curve
+// of the shadow above or below in w). `kind` is the scene's own code.
+struct SceneEvent {
+  double time = 0;         // s
+  int kind = 0;
+  double point[3] = {};    // shadow space
+  double w_self = 0, w_other = 0;
+};
+
 // What a simulating scene reports in every snapshot (zeros for scenes that do not simulate).
 struct SceneStatus {
+  static constexpr int kRecentEvents = 16;
   double sim_time = 0;          // s simulated
   std::int64_t sim_steps = 0;
   bool simulating = false;      // the scene runs a physics world
@@ -45,6 +55,11 @@ struct SceneStatus {
   int pinned = 0;               // pinned vertices
   std::uint64_t settings_revision = 0;  // bumps when physics settings were applied
   char message[160] = {};       // the last request the scene refused, and why
+  bool exploring = false;       // the probe walks the surface instead of the band pulling it
+  Vec3 probe = Vec3::Zero();    // shadow space, where the probe is
+  double probe_w = 0;           // its 4D depth
+  std::uint64_t event_count = 0;              // events so far; event i is events[i % kRecentEvents]
+  SceneEvent events[kRecentEvents] = {};
 };
 
 // Everything a scene computes in one tick.

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "haptics/spsc_queue.hpp"
 #include "haptics/triple_buffer.hpp"
+#include "interact/surface_explorer.hpp"
 #include "scenario/script_driver.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -73,6 +74,12 @@ SceneCommand live_frame(const Frame<4>& frame) {
   return c;
 }
 
+SceneCommand live_explore(bool on, const Vec3& at) {
+  SceneCommand c = live_command(LiveCode::kExplore, 0, on ? 1 : 0);
+  for (int k = 0; k < 3; ++k) c.x[k] = at[k];
+  return c;
+}
+
 SceneCommand live_mapping(const DeviceMapping& m) {
   SceneCommand c = live_command(LiveCode::kMapping);
   for (int k = 0; k < 3; ++k) c.x[k] = m.centre[k];
@@ -109,6 +116,8 @@ bool finite_command(const SceneCommand& c) {
     if (!std::isfinite(v)) return false;
   return true;
 }
+
+void set_message(char (&m)[160], const std::string& text) { std::snprintf(m, sizeof m, "%s", text.c_str()); }
 
 void set_message(SceneStatus& s, const std::string& text) {
   std::snprintf(s.message, sizeof s.message, "%s", text.c_str());
@@ -373,12 +382,13 @@ class PhysicsThread {
 namespace {
 
 template <int D>
-class LiveSimulation final : public HapticScene {
+class LiveSimulation final : public HapticScene, public LiveHandover {
  public:
   LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
       : options_(o), mapping_(o.mapping), frame4_(o.frame) {
     auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing);
     nv_ = core->vertex_count();
+    triangles_ = core->world().model().triangles;
     if (o.async_physics) {
       thread_ = std::make_unique<PhysicsThread<D>>(std::move(core));
       current_ = &thread_->state();  // before the loop thread starts: it becomes the one reader
@@ -389,6 +399,20 @@ class LiveSimulation final : public HapticScene {
     params_[kBandDamping] = {"B", 0.5, 0, 20, "N s per scene unit"};
     params_[kBandMaxForce] = {"max force", 2, 0.01, 50, "N on the vertex"};
     params_[kForceScale] = {"force scale", 1, 0, 10, "device N per vertex N"};
+    params_[kExploreStiffness] = {"explore K", 200, 0, 1000, "N/m at the device: the navigation spring"};
+    params_[kExploreDamping] = {"explore B", 1.0, 0, 10, "N s/m at the device"};
+    if constexpr (D == 4) explorer_ = std::make_unique<SurfaceExplorer>(triangles_, nv_);
+  }
+  ~LiveSimulation() override {
+    delete offered_.exchange(nullptr);
+    delete retired_.exchange(nullptr);
+  }
+
+  std::span<const Triangle> triangles() const override { return triangles_; }
+  void offer_crossings(std::unique_ptr<CrossingTable> table) override {
+    if (!explorer_ || !table) return;
+    delete retired_.exchange(nullptr, std::memory_order_acq_rel);
+    delete offered_.exchange(table.release(), std::memory_order_acq_rel);
   }
 
   std::string_view name() const override { return "live-simulation"; }
@@ -435,9 +459,19 @@ class LiveSimulation final : public HapticScene {
           if (held_ >= 0) grab(held_, mode_);
         }
         return;
+      case LiveCode::kExplore:
+        if (!explorer_) {
+          set_message(message_, "exploring needs a surface of R^4 (its w is what the sound tells)");
+          return;
+        }
+        exploring_ = c.i[1] == 1 && finite_command(c);
+        held_ = -1;
+        if (exploring_ && !explorer_->place(positions4(), frame4_, Vec3(c.x[0], c.x[1], c.x[2]))) exploring_ = false;
+        return;
       case LiveCode::kReset:
       case LiveCode::kPlayScript:
         held_ = -1;
+        exploring_ = false;
         break;
       default: break;
     }
@@ -449,7 +483,7 @@ class LiveSimulation final : public HapticScene {
     device_ = device;
     const bool button = device.buttons & 1u;
     if (thread_) current_ = &thread_->state();  // one consistent state for the whole tick
-    if (button && !button_ && held_ < 0) {
+    if (button && !button_ && held_ < 0 && !exploring_) {
       // A device's button grabs the vertex nearest its point in the shadow (the mouse path sends
       // kGrab with the vertex under the cursor instead).
       const int v = nearest(mapping_.to_shadow(device.position), kGrabReach / mapping_.metres_per_unit);
@@ -473,6 +507,11 @@ class LiveSimulation final : public HapticScene {
     } else {
       thread_->set_hand(hand);
       thread_->advance_clock(dt);
+    }
+    if (exploring_) {
+      explore(device, dt, out);
+      band_force_ = 0;
+      return out;
     }
     const auto x = positions();
     const auto v = velocities();
@@ -512,6 +551,12 @@ class LiveSimulation final : public HapticScene {
       out.band_from = hand_shadow();
     }
     out.band_force = band_force_;
+    if (message_[0] && !out.message[0]) std::copy(std::begin(message_), std::end(message_), out.message);
+    out.exploring = exploring_;
+    out.probe = probe_;
+    out.probe_w = probe_w_;
+    out.event_count = event_count_;
+    std::copy(std::begin(events_), std::end(events_), out.events);
   }
 
  private:
@@ -543,6 +588,47 @@ class LiveSimulation final : public HapticScene {
   Vec3 shadow(const Vec<D>& p) const { return to_view(p).template head<3>(); }
 
   Vec3 hand_shadow() const { return mapping_.to_shadow(device_.position) + offset_; }
+
+  // The positions as the explorer reads them (a world of R^4; empty otherwise).
+  std::span<const Vec4> positions4() const {
+    if constexpr (D == 4) return positions();
+    else return {};
+  }
+
+  // 4.3.1 and 5.3: the probe walks its sheet towards the hand, the hand feels the navigation
+  // spring, each pass of a shadow curve becomes an event for the sound cues.
+  void explore(const DeviceState& device, double dt, ToolOutput& out) {
+    if (!explorer_) return;
+    if (retired_.load(std::memory_order_acquire) == nullptr) {
+      if (CrossingTable* t = offered_.exchange(nullptr, std::memory_order_acq_rel)) {
+        explorer_->swap_crossings(*t);  // the old table goes back to the UI for freeing
+        retired_.store(t, std::memory_order_release);
+      }
+    }
+    explore_time_ += dt;
+    const double mpu = mapping_.metres_per_unit;
+    const Vec3 c = mapping_.to_shadow(device.position), v = mapping_.vector_to_shadow(device.velocity);
+    // Felt in N/m at the device: in shadow units the constants scale by mpu², the force back by 1/mpu².
+    const DampedSpring spring{params_[kExploreStiffness].value * mpu * mpu, params_[kExploreDamping].value * mpu * mpu};
+    explorer_->settings().rearm_distance = 1e-3 / mpu;  // a millimetre of the hand
+    const ExplorerStep st = explorer_->update(positions4(), frame4_, c, v, 1.0 / dt, explore_time_, spring);
+    while (auto e = explorer_->pop_event()) {
+      SceneEvent& se = events_[event_count_ % SceneStatus::kRecentEvents];
+      se.time = e->time;
+      se.kind = e->above ? kEventPassedAbove : kEventPassedBelow;
+      for (int k = 0; k < 3; ++k) se.point[k] = e->point[k];
+      se.w_self = e->w_self;
+      se.w_other = e->w_other;
+      ++event_count_;
+    }
+    if (!st.ok) return;
+    probe_ = st.probe;
+    probe_w_ = explorer_->probe_depth(positions4(), frame4_);
+    out.force = mapping_.vector_to_device(st.force) / (mpu * mpu);
+    if (!out.force.allFinite()) out.force.setZero();
+    out.anchor = mapping_.to_device(st.probe);
+    out.engaged = true;
+  }
 
   int nearest(const Vec3& point, double radius) const {
     const auto x = positions();
@@ -604,6 +690,18 @@ class LiveSimulation final : public HapticScene {
     f *= scale;
     return f.allFinite() ? f : Vec3::Zero();
   }
+
+  std::vector<Triangle> triangles_;                // the world's, fixed
+  std::unique_ptr<SurfaceExplorer> explorer_;      // R^4 only
+  std::atomic<CrossingTable*> offered_{nullptr};   // from the UI, taken by the tick
+  std::atomic<CrossingTable*> retired_{nullptr};   // given back by the tick, freed by the UI
+  bool exploring_ = false;
+  double explore_time_ = 0;
+  Vec3 probe_ = Vec3::Zero();
+  double probe_w_ = 0;
+  std::uint64_t event_count_ = 0;
+  SceneEvent events_[SceneStatus::kRecentEvents] = {};
+  char message_[160] = {};
 
   static constexpr double kMaxFeltStiffness = 800;  // N/m: what a desktop arm renders stably
   static constexpr double kGrabReach = 0.01;         // m: how near a device's point grabs a vertex

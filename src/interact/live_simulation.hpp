@@ -9,6 +9,7 @@
 #pragma once
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 
 #include "haptics/haptic_scene.hpp"
@@ -38,7 +39,12 @@ enum class LiveCode : int {
   kMapping,      // x0..2 centre, x3..11 axes (row-major), x12 metres per unit, x13..15 workspace centre
   kPlayScript,   // restart from the start with the scenario's script
   kStopScript,   // let go of what the script holds, keep the state
+  kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops
 };
+
+// SceneEvent kinds of the live simulation.
+inline constexpr int kEventPassedAbove = 1;  // the probe's sheet passed another's shadow above in w
+inline constexpr int kEventPassedBelow = 2;
 
 SceneCommand live_command(LiveCode code, int i0 = 0, int i1 = 0);
 SceneCommand live_time_scale(double scale);
@@ -47,6 +53,7 @@ SceneCommand live_grab(int vertex, int mode, const Vec3& hand);
 SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode);
 SceneCommand live_frame(const Frame<4>& frame);
 SceneCommand live_mapping(const DeviceMapping& mapping);
+SceneCommand live_explore(bool on, const Vec3& at = Vec3::Zero());
 
 struct LiveOptions {
   bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
@@ -57,7 +64,22 @@ struct LiveOptions {
 };
 
 // The scene's parameters (HapticScene::params), settable from the Haptics panel and commands.
-enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kLiveParamCount };
+enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kExploreStiffness, kExploreDamping,
+                 kLiveParamCount };
+
+struct CrossingTable;
+
+// What the UI hands a running live simulation directly (thread-safe, never blocking either side).
+class LiveHandover {
+ public:
+  virtual ~LiveHandover() = default;
+  // The world's triangles (global vertex indices), fixed for the simulation's life.
+  virtual std::span<const Triangle> triangles() const = 0;
+  // The shadow's intersection curves for the explorer (interact/surface_explorer.hpp's
+  // build_crossing_table on a recent state and the current frame); the latest offer wins, the
+  // tick installs it without allocating. No-op for a world of R^3.
+  virtual void offer_crossings(std::unique_ptr<CrossingTable> table) = 0;
+};
 
 // Builds the World of the scene's surfaces (scenario/world_builder). `scenario`, when given,
 // supplies the script kPlayScript plays. Throws s4d::Error with the reason the scene cannot be

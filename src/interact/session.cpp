@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "haptics/device_spec.hpp"
 #include "haptics/mouse_device.hpp"
+#include "interact/surface_explorer.hpp"
 #include "scenario/world_builder.hpp"
 
 namespace s4d {
@@ -43,6 +44,8 @@ void Session::close() {
   loop_.reset();
   monitor_.reset();
   snapshot_ = nullptr;
+  handover_ = nullptr;
+  events_seen_ = 0;
 }
 
 void Session::open(Document doc, const SessionOptions& options) {
@@ -86,6 +89,7 @@ void Session::start() {
   }
   HapticLoopConfig config;
   config.realtime_priority = options_.realtime_priority;
+  handover_ = dynamic_cast<LiveHandover*>(live.get());
   loop_ = std::make_unique<HapticLoop>(std::move(device), std::move(live), config);
   if (options_.threaded) loop_->start();
 
@@ -150,10 +154,44 @@ void Session::refresh() {
     rate_sim_time_ = snap.status.sim_time;
     rate_steps_ = snap.status.sim_steps;
   }
+  refresh_crossings();
   if (monitor_ && std::chrono::duration<double>(now - last_submit_).count() >= 0.2) {
     monitor_->submit(snap.points, snap.status.sim_time);
     last_submit_ = now;
   }
+}
+
+// While exploring, the explorer needs the shadow's curves of the surface as it is now: rebuilt a
+// few times a second, and at once when the view turns.
+void Session::refresh_crossings() {
+  if (!handover_ || !snapshot_ || !snapshot_->status.exploring || snapshot_->point_dimension != 4) return;
+  const auto now = std::chrono::steady_clock::now();
+  const bool turned = (doc_.scene.frame.matrix() - crossings_frame_.matrix()).cwiseAbs().maxCoeff() > 1e-12;
+  if (!turned && now - last_crossings_ < std::chrono::milliseconds(250)) return;
+  std::vector<Vec4> x(snapshot_->points.size() / 4);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (int k = 0; k < 4; ++k) x[i][k] = snapshot_->points[4 * i + static_cast<std::size_t>(k)];
+  try {
+    handover_->offer_crossings(
+        std::make_unique<CrossingTable>(build_crossing_table(handover_->triangles(), x, doc_.scene.frame)));
+  } catch (const std::exception&) {  // a state the finder cannot read: keep the last table
+  }
+  crossings_frame_ = doc_.scene.frame;
+  last_crossings_ = now;
+}
+
+std::vector<SceneEvent> Session::take_events() {
+  std::vector<SceneEvent> out;
+  if (!snapshot_) return out;
+  const SceneStatus& st = snapshot_->status;
+  constexpr auto ring = static_cast<std::uint64_t>(SceneStatus::kRecentEvents);
+  if (st.event_count < events_seen_) events_seen_ = 0;  // a new simulation
+  if (st.event_count - events_seen_ > ring) {
+    lost_events_ += st.event_count - events_seen_ - ring;
+    events_seen_ = st.event_count - ring;
+  }
+  for (; events_seen_ < st.event_count; ++events_seen_) out.push_back(st.events[events_seen_ % ring]);
+  return out;
 }
 
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }

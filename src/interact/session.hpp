@@ -95,6 +95,11 @@ class Session {
   // Where world vertex v is drawn (shadow space, from the last refresh); NaN when unknown.
   Vec3 vertex_shadow(int vertex) const;
   bool held() const { return snapshot_ && snapshot_->status.held_vertex >= 0; }
+  bool exploring() const { return snapshot_ && snapshot_->status.exploring; }
+  // The events (passes above / below) the loop reported since the last call, oldest first; events
+  // older than the snapshot's ring are lost (counted in lost_events()).
+  std::vector<SceneEvent> take_events();
+  std::uint64_t lost_events() const { return lost_events_; }
 
  private:
   void start();
@@ -113,6 +118,11 @@ class Session {
   std::int64_t rate_steps_ = 0;
   std::chrono::steady_clock::time_point last_submit_;
   DeviceMapping mapping_;
+  LiveHandover* handover_ = nullptr;  // the live simulation, owned by the loop
+  std::uint64_t events_seen_ = 0, lost_events_ = 0;
+  std::chrono::steady_clock::time_point last_crossings_{};
+  Frame<4> crossings_frame_;
+  void refresh_crossings();
 };
 
 }  // namespace s4d

@@ -141,3 +141,63 @@ TEST(GuiSmoke, TheSimulatedArmPullsTooThroughTheSameView) {
 
 }  // namespace
 }  // namespace s4d
+
+namespace s4d {
+namespace {
+
+nlohmann::json run_script(const std::string& open, const std::vector<std::string>& lines, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "script.txt");
+    for (const std::string& l : lines) f << l << "\n";
+    f << "120 dump " << (dir / "state.json").string() << "\n121 shot " << (dir / "shot.png").string() << "\n122 quit\n";
+  }
+  GuiOptions options;
+  options.open_spec = open;
+  options.input = (dir / "script.txt").string();
+  EXPECT_EQ(run_gui_app(options), 0);
+  return nlohmann::json::parse(std::ifstream(dir / "state.json"));
+}
+
+// Explore (E): pressed on the Clifford torus's far (blue) sheet and moved across the lower curve
+// of its shadow, the probe passes below the near sheet and stays on its own (w stays far).
+TEST(GuiSmoke, ExploringTheCliffordTorusPassesACurveBelow) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  std::vector<std::string> l{"3 key E", "10 move 620 640", "20 move 621 640", "30 press left"};
+  for (int i = 1; i <= 40; ++i) l.push_back(std::to_string(30 + 2 * i) + " move " + std::to_string(621 + 4 * i) + " 640");
+  const auto d = run_script(std::string(S4D_SOURCE_DIR) + "/scenes/clifford-torus.json", l,
+                            std::filesystem::temp_directory_path() / "s4d_gui_explore");
+  EXPECT_EQ(d["tool"].get<std::string>(), "Explore");
+  EXPECT_TRUE(d["exploring"].get<bool>()) << "the button is still held";
+  EXPECT_EQ(d["explore_passes"], nlohmann::json::array({"below"})) << d["status"];
+  EXPECT_LT(d["probe_w"].get<double>(), -0.3) << "still on the far sheet, behind the near one";
+  EXPECT_EQ(d["true_intersections"].get<int>(), 0);
+}
+
+// Sketch a ribbon (R): a stroke across a sphere of R^4, shift held on the way out, is threaded
+// above then below and simulated with it.
+TEST(GuiSmoke, ARibbonSketchedThroughASphereIsThreaded) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  std::vector<std::string> l{"3 move 640 400", "4 scroll -6", "8 key R", "10 move 360 380", "20 move 361 380", "30 press left"};
+  bool down = false;
+  for (int i = 1; i <= 70; ++i) {
+    const int x = 361 + 8 * i;
+    if (x > 640 && !down) {
+      l.push_back(std::to_string(30 + i) + " key-down LEFT_SHIFT");
+      down = true;
+    }
+    l.push_back(std::to_string(30 + i) + " move " + std::to_string(x) + " 380");
+  }
+  l.push_back("102 release left");
+  l.push_back("103 key-up LEFT_SHIFT");
+  const auto d = run_script("sphere:n=16", l, std::filesystem::temp_directory_path() / "s4d_gui_ribbon");
+  EXPECT_EQ(d["objects"].get<int>(), 2);
+  EXPECT_EQ(d["ribbon_passages"], nlohmann::json::array({"above", "below"})) << d["status"];
+  EXPECT_TRUE(d["simulating"].get<bool>());
+  EXPECT_EQ(d["true_intersections"].get<int>(), 0);
+}
+
+}  // namespace
+}  // namespace s4d

@@ -1,0 +1,36 @@
+// ExploreTool (paper 5.3): press on a surface and move — a probe held to the surface's 3D shadow
+// walks its own sheet through the shadow's self-intersections (it follows the 4D-continuous
+// surface, not the visually nearer sheet); the hand feels the navigation spring (4.3.1) and hears
+// a cue at every intersection curve passed, high above in w, low below. Release ends it.
+#pragma once
+#include <vector>
+
+#include "haptics/haptic_scene.hpp"
+#include "interact/pick.hpp"
+#include "interact/tool.hpp"
+
+namespace s4d {
+
+class ExploreTool final : public Tool {
+ public:
+  const char* name() const override { return "Explore"; }
+  std::string help() const override;
+  bool press(const ToolInput& in, Session& s) override;
+  void drag(const ToolInput& in, Session& s) override;
+  void release(const ToolInput& in, Session& s) override;
+  void hover(const ToolInput& in, Session& s) override;
+  void update(const ToolInput& in, Session& s) override;
+  void overlay(Overlay& o, const Session& s) const override;
+
+  // The passes heard so far in this exploration (for the panel and tests).
+  const std::vector<SceneEvent>& passes() const { return passes_; }
+  // The window plays these as cues (taken once).
+  std::vector<SceneEvent> take_new_passes() { return std::exchange(new_passes_, {}); }
+
+ private:
+  bool exploring_ = false;
+  Vec3 plane_point_ = Vec3::Zero();
+  std::vector<SceneEvent> passes_, new_passes_;
+};
+
+}  // namespace s4d
