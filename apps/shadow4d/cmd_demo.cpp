@@ -92,7 +92,8 @@ BoundingSphere enclosing(const std::vector<BoundingSphere>& balls) {
     hi = hi.cwiseMax(b.centre + Vec3::Constant(b.radius));
   }
   BoundingSphere all{0.5 * (lo + hi), 0};
-  for (const BoundingSphere& b : balls) all.radius = std::max(all.radius, (b.centre - all.centre).norm() + b.radius);
+  for (const BoundingSphere& b : balls)
+    all.radius = std::max(all.radius, (b.centre - all.centre).norm() + b.radius);
   return all;
 }
 
@@ -109,8 +110,8 @@ struct ExperimentResult {
 
 // Runs the scenario to its end, keeping kSheetFrames states drawn as the shadow its verdict
 // judges; those and every kCheckEvery-th state are checked exactly (true intersections, gap).
-ExperimentResult run_experiment(const Experiment& x, const fs::path& path, const ViewOptions& view, int frame_w,
-                                int frame_h) {
+ExperimentResult run_experiment(const Experiment& x, const fs::path& path, const ViewOptions& view,
+                                int frame_w, int frame_h) {
   const Scenario sc = load_scenario(path);
   const auto run = ScenarioRun::make(sc);
   RunFacts facts;
@@ -139,7 +140,8 @@ ExperimentResult run_experiment(const Experiment& x, const fs::path& path, const
   // The step of each frame after the first.
   std::vector<long> at;
   const double dt = sc.scene.physics.time_step;
-  const long until = x.frames_until > 0 ? std::min(facts.steps, std::lround(x.frames_until / dt)) : facts.steps;
+  const long until =
+      x.frames_until > 0 ? std::min(facts.steps, std::lround(x.frames_until / dt)) : facts.steps;
   const int spaced = x.frames_until > 0 ? kSheetFrames - 2 : kSheetFrames - 1;
   for (int k = 1; k <= spaced; ++k) at.push_back(until * k / spaced);
   if (x.frames_until > 0) at.push_back(facts.steps);
@@ -173,8 +175,8 @@ ExperimentResult run_experiment(const Experiment& x, const fs::path& path, const
     frames.push_back(render_offscreen(shots[i], frame_w, frame_h));
   }
   char gap[96];
-  std::snprintf(gap, sizeof gap, "%d true intersections in %d states checked, min gap %.3g", facts.intersections,
-                facts.checks, facts.min_gap);
+  std::snprintf(gap, sizeof gap, "%d true intersections in %d states checked, min gap %.3g",
+                facts.intersections, facts.checks, facts.min_gap);
   const std::string title = std::string(facts.pass() ? "PASS " : "FAIL ") + sc.name + ": " + sc.instruction +
                             "\n" + gap + "; " + facts.verdict.detail;
   return {facts, contact_sheet(frames, labels, title)};
@@ -189,8 +191,10 @@ const CommandRegistrar kDemo(
       args->view.size = "800x600";
       sub.add_option("--out,-o", args->out, "folder for the PNG files")->capture_default_str();
       sub.add_option("--scenes", args->scenes, "folder holding the scene files")->capture_default_str();
-      sub.add_option("--scenarios", args->scenarios, "folder holding the scenario files")->capture_default_str();
-      sub.add_option("--frame-size", args->frame_size, "size WxH of each frame of the experiments' contact sheets")
+      sub.add_option("--scenarios", args->scenarios, "folder holding the scenario files")
+          ->capture_default_str();
+      sub.add_option("--frame-size", args->frame_size,
+                     "size WxH of each frame of the experiments' contact sheets")
           ->capture_default_str();
       args->view.add_to(sub);
       sub.callback([args] {
@@ -219,12 +223,13 @@ const CommandRegistrar kDemo(
         for (const Experiment& x : kExperiments) {
           const fs::path png = fs::path(args->out) / x.sheet;
           try {
-            const ExperimentResult r = run_experiment(x, fs::path(args->scenarios) / (std::string(x.scenario) + ".json"),
-                                                      args->view, fw, fh);
+            const ExperimentResult r = run_experiment(
+                x, fs::path(args->scenarios) / (std::string(x.scenario) + ".json"), args->view, fw, fh);
             write_png(r.sheet, png);
-            std::cout << png.string() << "\n  " << x.scenario << " (paper " << x.figure << "): " << kSheetFrames
-                      << " frames of " << fw << "x" << fh << " over " << r.facts.steps << " steps, sheet "
-                      << r.sheet.width << "x" << r.sheet.height << "\n  " << verdict_line(r.facts) << "\n";
+            std::cout << png.string() << "\n  " << x.scenario << " (paper " << x.figure
+                      << "): " << kSheetFrames << " frames of " << fw << "x" << fh << " over "
+                      << r.facts.steps << " steps, sheet " << r.sheet.width << "x" << r.sheet.height << "\n  "
+                      << verdict_line(r.facts) << "\n";
             if (r.facts.pass()) ++passed;
           } catch (const std::exception& e) {
             std::cerr << "demo: " << x.scenario << ": " << e.what() << "\n";

@@ -38,10 +38,10 @@ std::string verdict_line(const RunFacts& f) {
   };
   std::ostringstream out;
   out << (f.pass() ? "PASS " : "FAIL ") << f.name << ": " << f.verdict.detail << "; " << f.intersections
-      << " true intersections in " << f.checks << " states checked (min gap " << g(f.min_gap) << ", hard layer "
-      << g(f.model.hard_thickness) << "); " << f.model.vertices << " vertices, " << f.steps << " steps, "
-      << g(f.ms_per_step) << " ms/step, " << f.warnings.rollbacks << " rollbacks, " << f.warnings.global_freezes
-      << " global freezes";
+      << " true intersections in " << f.checks << " states checked (min gap " << g(f.min_gap)
+      << ", hard layer " << g(f.model.hard_thickness) << "); " << f.model.vertices << " vertices, " << f.steps
+      << " steps, " << g(f.ms_per_step) << " ms/step, " << f.warnings.rollbacks << " rollbacks, "
+      << f.warnings.global_freezes << " global freezes";
   return out.str();
 }
 

@@ -110,8 +110,8 @@ void fill_rect(Image& image, int x0, int y0, int x1, int y1, const Rgba& colour)
 Image filled_image(int width, int height, Rgba colour) {
   if (width <= 0 || height <= 0 || static_cast<long long>(width) * height > kMaxPixels)
     throw Error("cannot make a " + std::to_string(width) + "×" + std::to_string(height) +
-                " image: each side must be positive and the whole at most " +
-                std::to_string(kMaxPixels) + " pixels");
+                " image: each side must be positive and the whole at most " + std::to_string(kMaxPixels) +
+                " pixels");
   Image image;
   image.width = width;
   image.height = height;
@@ -169,8 +169,8 @@ Image contact_sheet(const std::vector<Image>& frames, const std::vector<std::str
   for (std::size_t i = 0; i < frames.size(); ++i) {
     check_image(frames[i], "contact sheet frame");
     if (frames[i].width != w || frames[i].height != h)
-      throw Error("contact sheet: frame " + std::to_string(i) + " is " + std::to_string(frames[i].width) + "×" +
-                  std::to_string(frames[i].height) + ", frame 0 is " + std::to_string(w) + "×" +
+      throw Error("contact sheet: frame " + std::to_string(i) + " is " + std::to_string(frames[i].width) +
+                  "×" + std::to_string(frames[i].height) + ", frame 0 is " + std::to_string(w) + "×" +
                   std::to_string(h) + " (all must be of one size)");
   }
   const int n = static_cast<int>(frames.size());
@@ -184,7 +184,8 @@ Image contact_sheet(const std::vector<Image>& frames, const std::vector<std::str
   const long long sheet_h =
       title_band + static_cast<long long>(rows) * (h + label_band) + static_cast<long long>(rows + 1) * gap;
   if (sheet_w > kMaxPixels || sheet_h > kMaxPixels || sheet_w * sheet_h > kMaxPixels)
-    throw Error("contact sheet: " + std::to_string(sheet_w) + "×" + std::to_string(sheet_h) + " is too large");
+    throw Error("contact sheet: " + std::to_string(sheet_w) + "×" + std::to_string(sheet_h) +
+                " is too large");
   Image sheet = filled_image(static_cast<int>(sheet_w), static_cast<int>(sheet_h), layout.background);
   if (!title.empty()) draw_text(sheet, gap, gap, title, layout.text, scale);
   for (int i = 0; i < n; ++i) {

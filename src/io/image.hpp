@@ -40,14 +40,14 @@ void blit(Image& dst, const Image& src, int x, int y);
 // scale × scale block, a line is text_height(1) = 12 × scale pixels high, and '\n' starts a
 // new line. Characters outside printable ASCII are drawn as '?'. Clipped to the image.
 void draw_text(Image& image, int x, int y, std::string_view text, Rgba colour, int scale = 1);
-int text_width(std::string_view text, int scale = 1);  // px, the longest line
+int text_width(std::string_view text, int scale = 1);   // px, the longest line
 int text_height(std::string_view text, int scale = 1);  // px, 12 × scale per line
 
 // How contact_sheet lays frames out.
 struct SheetLayout {
-  int columns = 6;         // frames across; the last row may be shorter
-  int gap = 6;             // px between cells and around the edge
-  int text_scale = 2;      // font scale of the labels and the title
+  int columns = 6;     // frames across; the last row may be shorter
+  int gap = 6;         // px between cells and around the edge
+  int text_scale = 2;  // font scale of the labels and the title
   Rgba background{16, 18, 22, 255};
   Rgba text{235, 235, 235, 255};
 };

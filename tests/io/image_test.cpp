@@ -192,9 +192,10 @@ TEST(ContactSheet, EachFrameLandsInItsCellWithItsLabelBeneath) {
     for (int y = 0; y < 12; ++y)
       for (int x = 0; x < 16; ++x)
         ASSERT_TRUE(same_pixel(sheet.pixel(x0 + x, y0 + y), frames[i].pixel(x, y))) << "frame " << i;
-    EXPECT_EQ(sheet.pixel(x0 - 1, y0)[0], 7);   // gap on the left
-    EXPECT_EQ(sheet.pixel(x0, y0 - 1)[0], 7);   // gap above
-    bool label_drawn = false;  // in the band under the frame, within the cell's width
+    EXPECT_EQ(sheet.pixel(x0 - 1, y0)[0], 7);  // gap on the left
+    EXPECT_EQ(sheet.pixel(x0, y0 - 1)[0], 7);  // gap above
+    // The label is in the band under the frame, within the cell's width.
+    bool label_drawn = false;
     for (int y = y0 + 12; y < y0 + 12 + label_band; ++y)
       for (int x = x0; x < x0 + 16; ++x) label_drawn |= sheet.pixel(x, y)[0] == 250;
     EXPECT_TRUE(label_drawn) << "label " << i;
