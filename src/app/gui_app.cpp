@@ -17,12 +17,12 @@
 
 #include "app/haptics_window.hpp"
 #include "app/panels.hpp"
-#include "app/sketch_tool.hpp"
+#include "interact/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
 #include "interact/live_simulation.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
-#include "render/view_edit.hpp"
+#include "interact/view_edit.hpp"
 
 namespace s4d {
 
@@ -52,6 +52,7 @@ ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window,
   v.cursor = cursor;
   v.window = window;
   v.frame = frame;
+  v.camera = camera;
   return v;
 }
 
@@ -77,77 +78,6 @@ void draw_overlay(const Overlay& o, const Camera& camera, const Vec2& window) {
   for (const auto& l : o.screen_lines)
     dl->AddLine(ImVec2(static_cast<float>(l.a.x()), static_cast<float>(l.a.y())),
                 ImVec2(static_cast<float>(l.b.x()), static_cast<float>(l.b.y())), l.rgba, l.width);
-}
-
-// [SECTION] knot sketch and crossings
-// While sketching, the left button draws (shift: the stroke passes under); on release the stroke
-// becomes a knot added to the scene.
-void handle_sketch(GuiModel& model, SketchTool& tool, const Camera& camera, const WindowInput& input,
-                   const Vec2& window, bool captured, double now) {
-  if (!model.sketching()) {
-    tool.cancel();
-    return;
-  }
-  const Vec2 cursor = input.cursor();
-  const bool pressed = input.down(0);
-  const bool under = input.shift();
-  if (pressed && !tool.drawing() && !captured) tool.begin(camera, cursor, window, now, under);
-  else if (pressed && tool.drawing()) tool.add(cursor, window, now, under);
-  else if (!pressed && tool.drawing() && tool.screen().size() < 3) {
-    tool.cancel();
-    model.status = std::string("a click is not a stroke; ") + kSketchHelp;
-  } else if (!pressed && tool.drawing()) {
-    SceneObject obj;
-    bool made = false;
-    try {
-      obj.shape = tool.finish();
-      made = true;
-    } catch (const std::exception& e) {
-      model.error = e.what();
-    }
-    // Kept even when it made no knot (File > Save last sketch stroke), to look into.
-    model.last_stroke = stroke_as_curve(tool.last_stroke());
-    if (made) {
-      obj.name = "sketch-" + std::to_string(++model.created);
-      model.scene().objects.push_back(std::move(obj));
-      model.scene().view.intersections = true;  // its crossings and Gauss code
-      model.status = std::string("sketched ") + model.scene().objects.back().name + "; " + kSketchHelp;
-    }
-  }
-  // The stroke so far: white where it passes over, blue where under.
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const auto& pts = tool.screen();
-  for (std::size_t i = 1; i < pts.size(); ++i)
-    draw->AddLine(ImVec2(float(pts[i - 1].first.x()), float(pts[i - 1].first.y())),
-                  ImVec2(float(pts[i].first.x()), float(pts[i].first.y())),
-                  pts[i].second ? IM_COL32(90, 150, 255, 255) : IM_COL32(240, 240, 240, 255), 3.0f);
-}
-
-// A right click on a crossing's dot changes that crossing of the curve, as seen (the paper's
-// "what does changing this crossing give?"). False when no dot is under the cursor.
-bool change_crossing_at(GuiModel& model, const Camera& camera, const Vec2& cursor, const Vec2& window) {
-  const ScreenCrossing* best = nullptr;
-  double best_px = 14;  // pixels: about a dot's size
-  const ScreenCrossings found = screen_crossings(model.scene(), camera);
-  for (const ScreenCrossing& c : found.crossings) {
-    const Vec2 at = camera.ndc(c.over);
-    const Vec2 px((at.x() + 1) / 2 * window.x(), (1 - at.y()) / 2 * window.y());
-    if ((px - cursor).norm() < best_px) {
-      best_px = (px - cursor).norm();
-      best = &c;
-    }
-  }
-  if (!best) return false;
-  try {
-    SceneObject& obj = model.scene().objects[best->object];
-    obj.shape = change_crossing_in_view(model.scene(), camera, *best, 2.5 * model.scene().view.tube_radius);
-    obj.generator.reset();  // edited geometry: saved as a file beside the scene
-    obj.source_path.clear();
-    model.status = "changed a crossing of '" + obj.name + "'";
-  } catch (const std::exception& e) {
-    model.error = e.what();
-  }
-  return true;
 }
 
 // [SECTION] input routing
@@ -176,10 +106,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       if (in.key_pressed(GLFW_KEY_T)) model.choose(ToolChoice::kTouch);
       if (in.key_pressed(GLFW_KEY_E)) model.choose(ToolChoice::kExplore);
       if (in.key_pressed(GLFW_KEY_R)) model.choose(ToolChoice::kSketchRibbon);
-      if (in.key_pressed(GLFW_KEY_K)) {
-        model.choose(ToolChoice::kSketchKnot);
-        model.status = kSketchHelp;
-      }
+      if (in.key_pressed(GLFW_KEY_K)) model.choose(ToolChoice::kSketchKnot);
     }
     tool = model.active_tool();
     if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
@@ -193,14 +120,17 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
   if (!captured) {
     if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
-    if (in.pressed(1) && !model.sketching()) {
-      if (!change_crossing_at(model, camera, in.cursor(), window) && tool) tool->right_click(ti, session);
+    if (in.pressed(1)) {
+      std::string message;
+      if (change_crossing_under(ti.view, model.scene(), message)) model.status = message;
+      else if (tool) tool->right_click(ti, session);
     }
-    if (!model.sketching()) {  // while sketching a knot the left button draws (handle_sketch)
+    {
       if (in.pressed(0)) {
         // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
         // "below"; otherwise a press on a surface goes to the tool.
-        const bool navigate = (in.shift() && model.tool != ToolChoice::kSketchRibbon) || in.ctrl();
+        const bool sketch = model.tool == ToolChoice::kSketchRibbon || model.tool == ToolChoice::kSketchKnot;
+        const bool navigate = (in.shift() && !sketch) || in.ctrl();
         r.tool_drag = tool && !navigate && tool->press(ti, session);
         r.view_drag = !r.tool_drag;
       } else if (in.down(0) && r.tool_drag) {
@@ -270,7 +200,7 @@ void dump_state(GuiModel& model, const std::string& path) {
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
   j["frame"] = frame;
-  j["tool"] = model.active_tool() ? model.active_tool()->name() : "Sketch a knot";
+  j["tool"] = model.active_tool()->name();
   j["objects"] = model.scene().objects.size();
   Json passes = Json::array();
   for (const SceneEvent& e : model.explore.passes()) passes.push_back(e.kind == kEventPassedAbove ? "above" : "below");
@@ -383,7 +313,6 @@ int run_gui_app(const GuiOptions& options) {
     input.set_script(std::move(script));
     Renderer renderer;
     Panels panels;
-    SketchTool sketch;
     HapticsWindow haptics;
     GuiModel model;
     model.audio = std::make_unique<AudioPlayer>();
@@ -414,11 +343,6 @@ int run_gui_app(const GuiOptions& options) {
       input.write_to_imgui();
       ImGui::NewFrame();
 
-      if (model.document_changed) {
-        model.document_changed = false;
-        model.session.rebuild();
-        model.fit = fit_of(model.scene());
-      }
       model.session.refresh();
       if (model.scene().objects.size() != objects_seen) {  // a sketched ribbon: keep it in view
         objects_seen = model.scene().objects.size();
@@ -436,7 +360,6 @@ int run_gui_app(const GuiOptions& options) {
       ti.alt = input.alt();
       ti.time = glfwGetTime();
       sync_view(model, camera, sent_frame, sent_mapping);
-      handle_sketch(model, sketch, camera, input, win, ImGui::GetIO().WantCaptureMouse, ti.time);
       route_input(model, routing, input, ti, win, camera);
       panels.draw(model, ImGui::GetIO().Framerate);
       if (model.open_haptics) {

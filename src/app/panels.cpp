@@ -155,7 +155,7 @@ void Panels::menu_bar(GuiModel& model) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
-    if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, !model.last_stroke.components.empty()))
+    if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, model.knot.has_last_stroke()))
       stroke_browser_.open(".");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("the cursor samples of the last sketch (x y u), for\n"
@@ -181,10 +181,7 @@ void Panels::menu_bar(GuiModel& model) {
   }
   if (ImGui::BeginMenu("Create")) {
     bool sketching = model.sketching();
-    if (ImGui::MenuItem("Sketch a knot", "K", &sketching)) {
-      model.choose(sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch);
-      if (sketching) model.status = kSketchHelp;
-    }
+    if (ImGui::MenuItem("Sketch a knot", "K", &sketching)) model.choose(sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("draw a closed curve with the left button in the plane facing you;\n"
                         "where it crosses what is drawn it passes over, or under with shift held.\n"
@@ -300,7 +297,7 @@ void Panels::scene_panel(GuiModel& model) {
   }
   if (remove >= 0) {
     scene.objects.erase(scene.objects.begin() + remove);
-    model.document_changed = true;
+    model.session.rebuild();  // the simulation restarts from the objects as they are
   }
   ImGui::End();
 }
@@ -530,7 +527,7 @@ void Panels::generator_dialog(GuiModel& model) {
         if (info->dim == 4) model.view.turn_to_generic_view();
       } else {
         model.scene().objects.push_back(std::move(obj));
-        model.document_changed = true;
+        model.session.rebuild();  // the simulation restarts from the objects as they are
       }
       model.status = "created " + info->name;
     } catch (const std::exception& e) {
@@ -556,7 +553,7 @@ void Panels::dialogs(GuiModel& model) {
   if (auto p = stroke_browser_.draw()) {
     try {
       const auto path = p->extension() == ".txt" ? *p : std::filesystem::path(p->string() + ".txt");
-      write_shape_file(model.last_stroke, path);
+      write_shape_file(model.knot.last_stroke_curve(), path);
       model.status = "saved " + path.string() + " (shadow4d knot sketch " + path.filename().string() + " --knot)";
     } catch (const std::exception& e) {
       model.error = e.what();

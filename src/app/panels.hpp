@@ -13,16 +13,13 @@
 #include "audio/audio_player.hpp"
 #include "interact/explore_tool.hpp"
 #include "interact/grab_tool.hpp"
+#include "interact/knot_sketch_tool.hpp"
 #include "interact/ribbon_tool.hpp"
 #include "interact/session.hpp"
 #include "io/scene.hpp"
 #include "render/scene_geometry.hpp"
 
 namespace s4d {
-
-// The status line while sketching (Create > Sketch a knot).
-inline constexpr const char* kSketchHelp =
-    "sketch: drag to draw a closed curve; hold shift where it passes under; Esc stops";
 
 enum class ToolChoice { kTouch, kExplore, kSketchRibbon, kSketchKnot };
 
@@ -48,13 +45,12 @@ struct GuiModel {
   bool want_screenshot = false;
   std::string screenshot_path = "shadow4d-screenshot.png";
   bool open_haptics = false;   // show the haptics panel
-  bool document_changed = false;  // objects added or removed: restart the simulation from them
   // [tools]
   ToolChoice tool = ToolChoice::kTouch;
   GrabTool grab;
   ExploreTool explore;
   RibbonTool ribbon;
-  Curve<3> last_stroke;        // the last sketch's stroke (stroke_as_curve), for File > Save
+  KnotSketchTool knot;
   // [drawn]
   IntersectionSummary intersections;  // of the last frame drawn (view.intersections)
   int created = 0;             // counter for unique object names
@@ -62,13 +58,13 @@ struct GuiModel {
   std::unique_ptr<AudioPlayer> audio;  // the cues of exploring (silent when no device)
 
   Scene& scene() { return session.scene(); }
-  // The tool the mouse drives now; nullptr while sketching a knot (the window's own stroke).
+  // The tool the mouse drives now.
   Tool* active_tool() {
     switch (tool) {
-      case ToolChoice::kTouch: return &grab;
       case ToolChoice::kExplore: return &explore;
       case ToolChoice::kSketchRibbon: return &ribbon;
-      default: return nullptr;
+      case ToolChoice::kSketchKnot: return &knot;
+      default: return &grab;
     }
   }
   void choose(ToolChoice t) {

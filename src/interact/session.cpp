@@ -126,7 +126,8 @@ void Session::refresh() {
   const HapticSnapshot& snap = loop_->snapshot();
   snapshot_ = &snap;
   const int d = snap.point_dimension;
-  for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
+  // Objects added since the simulation started (a sketched knot) are not bodies of it.
+  for (std::size_t o = 0; o < std::min(doc_.scene.objects.size(), first_.size()); ++o) {
     if (first_[o] < 0) continue;
     SceneObject& obj = doc_.scene.objects[o];
     if (d == 4) {
@@ -217,7 +218,8 @@ void Session::set_hand(const Vec3& p, bool pressed) {
 
 Vec3 Session::vertex_shadow(int v) const {
   const int o = object_of_vertex(v);
-  if (o < 0) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  if (o < 0 || o >= static_cast<int>(doc_.scene.objects.size()))
+    return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   const int local = v - first_[static_cast<std::size_t>(o)];
   return std::visit([&](const auto& s) -> Vec3 {
     using T = std::decay_t<decltype(s)>;

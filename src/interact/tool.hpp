@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/camera.hpp"
 #include "core/frame.hpp"
 #include "core/vec.hpp"
 
@@ -27,6 +28,7 @@ struct ToolView {
   Vec2 cursor = Vec2::Zero();  // pixels, y down
   Vec2 window = Vec2(1, 1);    // pixels
   Frame<4> frame;              // how objects of R^4 are seen (their shadow)
+  Camera camera;               // the view itself (for tools that work on the screen's image)
 
   // Where the ray meets the plane through `point` facing the eye (the point itself when the ray
   // runs along the plane).

@@ -248,22 +248,4 @@ void append_mesh(RenderMesh& mesh, const RenderMesh& part, int source_offset) {
   for (std::uint32_t i : part.indices) mesh.indices.push_back(base + i);
 }
 
-BoundingSphere bounding_sphere(const std::vector<Vec3>& points) {
-  // Non-finite points (a broken edit) are ignored so one bad vertex cannot lose the camera.
-  BoundingSphere s;
-  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
-  for (const Vec3& p : points) {
-    if (!p.allFinite()) continue;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  if (!(lo.x() <= hi.x())) return s;
-  s.centre = 0.5 * (lo + hi);
-  double r2 = 0;
-  for (const Vec3& p : points)
-    if (p.allFinite()) r2 = std::max(r2, (p - s.centre).squaredNorm());
-  s.radius = std::sqrt(r2);
-  return s;
-}
-
 }  // namespace s4d

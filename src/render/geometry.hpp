@@ -62,12 +62,5 @@ RenderMesh sphere_mesh(const Vec3& centre, double radius, int rings = 6, int sid
 // Appends `part` to `mesh` (indices and sources shifted).
 void append_mesh(RenderMesh& mesh, const RenderMesh& part, int source_offset);
 
-// A sphere containing every finite point: centre of the bounding box, radius to the farthest
-// point.
-struct BoundingSphere {
-  Vec3 centre = Vec3::Zero();
-  double radius = 0;  // 0 for no points or a single point
-};
-BoundingSphere bounding_sphere(const std::vector<Vec3>& points);
 
 }  // namespace s4d

@@ -9,7 +9,7 @@
 #include "core/vec.hpp"
 #include "io/image.hpp"
 #include "io/scene.hpp"
-#include "render/camera.hpp"
+#include "core/camera.hpp"
 #include "render/scene_geometry.hpp"
 
 namespace s4d {

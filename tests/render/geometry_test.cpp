@@ -1,4 +1,5 @@
 // Pure-geometry tests of the renderer: projection, normals, tubes, beads, bounding spheres (no GL).
+#include "core/camera.hpp"
 #include "render/geometry.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The window's sketch tool without a window: cursor pixels map onto the sketch plane exactly as
 // the camera draws it, and a stroke drawn through the camera becomes its knot where it was drawn.
-#include "app/sketch_tool.hpp"
+#include "interact/knot_sketch_tool.hpp"
 
 #include <gtest/gtest.h>
 
@@ -87,6 +87,53 @@ TEST(SketchTool, AClickIsNoStroke) {
   EXPECT_EQ(tool.screen().size(), 1u) << "a sample where the last one was is not kept";
   EXPECT_THROW(tool.finish(), Error);
   EXPECT_FALSE(tool.drawing());
+}
+
+}  // namespace
+}  // namespace s4d
+
+#include "interact/session.hpp"
+
+namespace s4d {
+namespace {
+
+// The same stroke through the Tool type, as the window (or its input file) drives it: the knot
+// joins the session's scene, its crossings shown.
+TEST(KnotSketchTool, PressDragReleaseAddsTheKnotToTheScene) {
+  Session session;  // an empty document: nothing to simulate, knots are curves
+  session.open(Document{}, SessionOptions{});
+  const Camera c = turned_camera();
+  const SketchPlane plane(c);
+  KnotSketchTool tool;
+  ToolInput in;
+  in.view.camera = c;
+  in.view.window = kWindow;
+  const int n = 240;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * 0.99 * i / (n - 1);
+    const Vec3 local(0.3 * (std::sin(t) + 2 * std::sin(2 * t)), 0.3 * (std::cos(t) - 2 * std::cos(2 * t)), 0);
+    in.view.cursor = pixel_of(c, plane.to_shadow(local));
+    in.shift = -std::sin(3 * t) < 0;
+    in.time = i / 120.0;
+    if (i == 0) ASSERT_TRUE(tool.press(in, session));
+    else tool.drag(in, session);
+  }
+  Overlay o;
+  tool.overlay(o, session);
+  EXPECT_EQ(o.screen_lines.size(), static_cast<std::size_t>(n - 1)) << "the stroke is drawn as it goes";
+  tool.release(in, session);
+  ASSERT_EQ(session.scene().objects.size(), 1u);
+  EXPECT_EQ(session.scene().objects[0].name, "sketch-1");
+  EXPECT_TRUE(session.scene().view.intersections);
+  EXPECT_EQ(identify_knot(std::get<Curve<3>>(session.scene().objects[0].shape)).name, "3_1 (DT 3a_1)");
+  EXPECT_TRUE(tool.has_last_stroke());
+  EXPECT_EQ(tool.last_stroke_curve().point_count(), static_cast<std::size_t>(n));
+  // A click makes nothing, and says so.
+  in.view.cursor = Vec2(400, 300);
+  tool.press(in, session);
+  tool.release(in, session);
+  EXPECT_EQ(session.scene().objects.size(), 1u);
+  EXPECT_NE(tool.take_message().find("a click is not a stroke"), std::string::npos);
 }
 
 }  // namespace

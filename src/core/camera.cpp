@@ -1,5 +1,5 @@
 // Camera matrices and the auto-fit distance (see camera.hpp).
-#include "render/camera.hpp"
+#include "core/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +71,24 @@ Camera make_camera(const BoundingSphere& sphere, const Eigen::Quaterniond& orien
   c.far_plane = c.distance + 1.5 * radius;
   c.near_plane = std::max(c.distance - 1.5 * radius, 1e-3 * c.far_plane);
   return c;
+}
+
+BoundingSphere bounding_sphere(const std::vector<Vec3>& points) {
+  // Non-finite points (a broken edit) are ignored so one bad vertex cannot lose the camera.
+  BoundingSphere s;
+  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
+  for (const Vec3& p : points) {
+    if (!p.allFinite()) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!(lo.x() <= hi.x())) return s;
+  s.centre = 0.5 * (lo + hi);
+  double r2 = 0;
+  for (const Vec3& p : points)
+    if (p.allFinite()) r2 = std::max(r2, (p - s.centre).squaredNorm());
+  s.radius = std::sqrt(r2);
+  return s;
 }
 
 }  // namespace s4d

@@ -1,8 +1,9 @@
-#include "app/sketch_tool.hpp"
+#include "interact/knot_sketch_tool.hpp"
 
 #include <cmath>
 
 #include "core/error.hpp"
+#include "interact/session.hpp"
 
 namespace s4d {
 
@@ -59,6 +60,56 @@ Curve<3> SketchTool::finish() {
 void SketchTool::cancel() {
   stroke_.clear();
   screen_.clear();
+}
+
+std::string KnotSketchTool::help() const {
+  return "sketch: drag to draw a closed curve; hold shift where it passes under; Esc stops";
+}
+
+bool KnotSketchTool::press(const ToolInput& in, Session& s) {
+  stroke_.begin(in.view.camera, in.view.cursor, in.view.window, in.time, in.shift);
+  return true;
+}
+
+void KnotSketchTool::drag(const ToolInput& in, Session& s) {
+  if (stroke_.drawing()) stroke_.add(in.view.cursor, in.view.window, in.time, in.shift);
+}
+
+void KnotSketchTool::release(const ToolInput& in, Session& s) {
+  if (!stroke_.drawing()) return;
+  if (stroke_.screen().size() < 3) {
+    stroke_.cancel();
+    message_ = "a click is not a stroke; " + help();
+    return;
+  }
+  SceneObject obj;
+  try {
+    obj.shape = stroke_.finish();
+  } catch (const std::exception& e) {
+    message_ = std::string("no knot: ") + e.what();
+    return;
+  }
+  int n = 1;
+  for (const SceneObject& o : s.scene().objects) n += o.name.rfind("sketch-", 0) == 0;
+  obj.name = "sketch-" + std::to_string(n);
+  s.scene().objects.push_back(std::move(obj));
+  s.scene().view.intersections = true;  // its crossings and Gauss code
+  message_ = "sketched " + s.scene().objects.back().name + "; " + help();
+}
+
+bool KnotSketchTool::key(ToolKey k, const ToolInput&, Session&) {
+  if (k != ToolKey::kEscape || !stroke_.drawing()) return false;
+  stroke_.cancel();
+  message_ = "stroke dropped";
+  return true;
+}
+
+// The stroke so far: white where it passes over, blue where under.
+void KnotSketchTool::overlay(Overlay& o, const Session&) const {
+  const auto& pts = stroke_.screen();
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    o.screen_lines.push_back({pts[i - 1].first, pts[i].first,
+                              pts[i].second ? overlay_colour(0.35, 0.6, 1) : overlay_colour(0.95, 0.95, 0.95), 3});
 }
 
 }  // namespace s4d

@@ -1,6 +1,6 @@
 // Camera tests: the auto-fit frustum contains the bounding sphere, matrices follow OpenGL's
 // conventions, depth grows away from the eye, bad input still gives usable matrices.
-#include "render/camera.hpp"
+#include "core/camera.hpp"
 
 #include <gtest/gtest.h>
 

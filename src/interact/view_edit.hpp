@@ -1,9 +1,10 @@
 // Editing a curve through the view, as the paper's 2D tool does with its shadow: changing one
 // crossing of the diagram the camera sees.
 #pragma once
+#include "core/camera.hpp"
+#include "interact/tool.hpp"
+#include "interact/view_crossings.hpp"
 #include "io/scene.hpp"
-#include "render/camera.hpp"
-#include "render/scene_geometry.hpp"
 
 namespace s4d {
 
@@ -16,5 +17,10 @@ namespace s4d {
 // eye, or no bump changes that crossing alone.
 Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const ScreenCrossing& c,
                               double clearance);
+
+// The crossing change of the window's right click: the crossing whose dot lies within 14 pixels
+// of the cursor, changed in scene's curve; false when no dot is there. What happened (or why it
+// could not) is left in `message`.
+bool change_crossing_under(const ToolView& view, Scene& scene, std::string& message);
 
 }  // namespace s4d

@@ -6,8 +6,9 @@
 #pragma once
 #include <vector>
 
+#include "core/camera.hpp"
+#include "interact/tool.hpp"
 #include "knots/sketch.hpp"
-#include "render/camera.hpp"
 
 namespace s4d {
 
@@ -24,6 +25,7 @@ struct SketchPlane {
   Vec3 to_shadow(const Vec3& local) const { return centre + local.x() * right + local.y() * up + local.z() * toward_eye; }
 };
 
+// The stroke itself, in window pixels mapped onto the sketch plane of the stroke's camera.
 class SketchTool {
  public:
   bool drawing() const { return !stroke_.empty(); }
@@ -47,6 +49,26 @@ class SketchTool {
   SketchPlane plane_;
   std::vector<SketchSample> stroke_;
   std::vector<std::pair<Vec2, bool>> screen_;
+};
+
+// The knot sketch as a Tool (Create > Sketch a knot, K): press, drag and release draw one stroke;
+// shift held where it passes under; the knot joins the scene, its crossings shown and named.
+class KnotSketchTool final : public Tool {
+ public:
+  const char* name() const override { return "Sketch a knot"; }
+  std::string help() const override;
+  bool press(const ToolInput& in, Session& s) override;
+  void drag(const ToolInput& in, Session& s) override;
+  void release(const ToolInput& in, Session& s) override;
+  bool key(ToolKey k, const ToolInput& in, Session& s) override;
+  void overlay(Overlay& o, const Session& s) const override;
+  // The last stroke finished, as the curve File > Save last sketch stroke writes (x y u).
+  Curve<3> last_stroke_curve() const { return stroke_as_curve(stroke_.last_stroke()); }
+  bool has_last_stroke() const { return !stroke_.last_stroke().empty(); }
+  const SketchTool& stroke() const { return stroke_; }
+
+ private:
+  SketchTool stroke_;
 };
 
 }  // namespace s4d

@@ -2,11 +2,19 @@
 // to the scene's bounding sphere when the view asks for it (distance 0).
 #pragma once
 #include "core/vec.hpp"
-#include "render/geometry.hpp"
+#include <vector>
 
 namespace s4d {
 
 using Mat4 = Eigen::Matrix4d;
+
+// A sphere containing every finite point: centre of the bounding box, radius to the farthest
+// point.
+struct BoundingSphere {
+  Vec3 centre = Vec3::Zero();
+  double radius = 0;  // 0 for no points or a single point
+};
+BoundingSphere bounding_sphere(const std::vector<Vec3>& points);
 
 struct Camera {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // camera axes in the world

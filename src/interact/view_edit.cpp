@@ -1,4 +1,4 @@
-#include "render/view_edit.hpp"
+#include "interact/view_edit.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -109,6 +109,32 @@ Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const Sc
     }
   }
   throw Error("changing this crossing from this view would change others: turn the view a little");
+}
+
+bool change_crossing_under(const ToolView& view, Scene& scene, std::string& message) {
+  const Camera& camera = view.camera;
+  const ScreenCrossing* best = nullptr;
+  double best_px = 14;  // pixels: about a dot's size
+  const ScreenCrossings found = screen_crossings(scene, camera);
+  for (const ScreenCrossing& c : found.crossings) {
+    const Vec2 at = camera.ndc(c.over);
+    const Vec2 px((at.x() + 1) / 2 * view.window.x(), (1 - at.y()) / 2 * view.window.y());
+    if ((px - view.cursor).norm() < best_px) {
+      best_px = (px - view.cursor).norm();
+      best = &c;
+    }
+  }
+  if (!best) return false;
+  try {
+    SceneObject& obj = scene.objects[static_cast<std::size_t>(best->object)];
+    obj.shape = change_crossing_in_view(scene, camera, *best, 2.5 * scene.view.tube_radius);
+    obj.generator.reset();  // edited geometry: saved as a file beside the scene
+    obj.source_path.clear();
+    message = "changed a crossing of '" + obj.name + "'";
+  } catch (const std::exception& e) {
+    message = std::string("cannot change that crossing: ") + e.what();
+  }
+  return true;
 }
 
 }  // namespace s4d
