@@ -21,6 +21,15 @@ void HapticsWindow::draw(Session& session) {
     ImGui::End();
     return;
   }
+  // The backend list starts at the device in use.
+  int count = 0;
+  const char* const* names = haptics_panel_devices(&count);
+  const std::string_view in_use = session.snapshot()->device_name;
+  if (in_use != shown_device_) {
+    shown_device_ = std::string(in_use);
+    for (int i = 0; i < count; ++i)
+      if (in_use == names[i]) ui_.device_choice = i;
+  }
   draw_haptics_panel(ui_, *session.loop(), *session.snapshot());
   if (!ui_.requested_device.empty()) {
     try {

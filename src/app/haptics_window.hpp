@@ -2,6 +2,8 @@
 // session, which maps it onto the view), the loop's period and safety statistics, the hand's
 // parameters. There is one simulation, the one in the view; its device cursor is drawn there.
 #pragma once
+#include <string>
+
 #include "app/haptics_panel.hpp"
 
 namespace s4d {
@@ -17,6 +19,7 @@ class HapticsWindow {
 
  private:
   HapticsPanelState ui_{};
+  std::string shown_device_;  // the device the backend list was last set to
 };
 
 }  // namespace s4d
