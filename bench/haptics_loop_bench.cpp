@@ -12,8 +12,8 @@
 
 #include "haptics/haptic_loop.hpp"
 #include "haptics/haptic_session.hpp"
-#include "haptics/rubber_band_scene.hpp"
 #include "haptics/simulated_arm.hpp"
+#include "interact/haptic_scenes.hpp"
 #include "io/scene.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
@@ -66,7 +66,8 @@ int render_at_60fps(HapticLoop& loop, int cloth_n, const std::atomic<bool>& stop
 }
 
 // range(0): cloth vertices per side (0 = sticky plane, no physics); range(1): render at 60 fps;
-// range(2): 1 = the cloth steps on its own thread (AsyncSimulation), 0 = inside the haptic tick.
+// range(2): 1 = the cloth's World steps on its own thread (LiveSimulation's async physics), 0 = inside
+// the haptic tick.
 void BM_HapticLoopJitter(benchmark::State& state) {
   const int cloth_n = static_cast<int>(state.range(0));
   const bool render = state.range(1) != 0;
@@ -76,22 +77,20 @@ void BM_HapticLoopJitter(benchmark::State& state) {
   bool realtime = false;
   std::string note;
   for (auto _ : state) {
-    SceneChoice choice;
+    HapticSceneChoice choice;
     choice.name = cloth_n > 0 ? "cloth" : "plane";
     choice.cloth_n = std::max(2, cloth_n);
     choice.async_physics = state.range(2) != 0;
-    auto scene = make_haptic_scene(choice);
+    HapticSceneSetup setup = make_haptic_scene(choice);
     auto arm = std::make_unique<SimulatedArm>();
-    Vec3 start(0.02, 0, 0);
-    double press = 0.003;
-    if (auto* band = dynamic_cast<RubberBandScene*>(scene.get())) {
-      band->set_param(RubberBandScene::kHold, 1);
-      start = band->simulation().shadow_position((cloth_n / 2) * cloth_n + cloth_n / 4);
-      press = 0;
-    }
+    const Vec3 start = setup.hand_start;
+    const double press = setup.press;
     arm->set_position(start);
     arm->set_hand_script([start, press](double t) { return demo_hand_path(t, start, press); });
+    const bool holds = setup.held_vertex >= 0;
+    auto scene = std::move(setup.scene);
     HapticLoop loop(std::move(arm), std::move(scene));
+    if (holds) loop.set_pointer(start, 1u);  // the arm's button, held on the vertex from the first tick
     loop.start();
     std::atomic<bool> stop{false};
     std::thread renderer;

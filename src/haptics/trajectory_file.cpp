@@ -5,7 +5,7 @@
 //   device sim
 //   scene sticky-plane
 //   caps <max_force> <max_continuous> <max_stiffness> <max_rate> <outputs_force 0|1> <min xyz> <max xyz>
-//   param H 500
+//   param H 500            (a name may have spaces: param max force 2)
 //   setup <free text up to the end of the line: how the scene was built>
 //   tick <tick> <events> <buttons> <x y z> <vx vy vz> <tx ty tz> <fx fy fz>
 #include "haptics/trajectory_file.hpp"
@@ -181,8 +181,11 @@ Trajectory read_trajectory(const std::filesystem::path& path) {
       while (!rest.empty() && (rest.back() == '\r' || rest.back() == ' ')) rest.pop_back();
       t.header.setup = rest;
     } else if (w[0] == "param") {
-      lr.expect(w, 3, "param");
-      t.header.params.emplace_back(std::string(w[1]), lr.number(w[2]));
+      // The name is every word between the keyword and the value ("param max force 2").
+      if (w.size() < 3) lr.fail("param needs a name and a value");
+      std::string name(w[1]);
+      for (std::size_t k = 2; k + 1 < w.size(); ++k) name += " " + std::string(w[k]);
+      t.header.params.emplace_back(std::move(name), lr.number(w.back()));
     } else {
       lr.fail("unknown keyword '" + std::string(w[0]) + "'");
     }

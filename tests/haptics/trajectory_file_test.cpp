@@ -35,7 +35,7 @@ TEST(TrajectoryFile, RoundTripIsBitExact) {
   t.header.caps.max_force = 3.3;
   t.header.caps.max_force_rate = 1000;
   t.header.caps.outputs_force = true;
-  t.header.params = {{"H", 1.0 / 3.0}, {"Kd", 1e-300}};
+  t.header.params = {{"H", 1.0 / 3.0}, {"Kd", 1e-300}, {"max force", 2}};  // a live simulation's names have spaces
   t.header.setup = "cloth_n=8 collisions=0";
   t.ticks[3].force[1] = 2.0 / 3.0;
   t.ticks[4].force[2] = -5e-324;  // denormal
@@ -50,9 +50,11 @@ TEST(TrajectoryFile, RoundTripIsBitExact) {
   EXPECT_EQ(r.header.setup, "cloth_n=8 collisions=0");
   EXPECT_EQ(r.header.caps.max_force, 3.3);
   EXPECT_TRUE(r.header.caps.outputs_force);
-  ASSERT_EQ(r.header.params.size(), 2u);
+  ASSERT_EQ(r.header.params.size(), 3u);
   EXPECT_EQ(r.header.params[0].second, 1.0 / 3.0);
   EXPECT_EQ(r.header.params[1].second, 1e-300);
+  EXPECT_EQ(r.header.params[2].first, "max force");
+  EXPECT_EQ(r.header.params[2].second, 2);
   for (std::size_t i = 0; i < t.ticks.size(); ++i)
     ASSERT_EQ(std::memcmp(&r.ticks[i], &t.ticks[i], sizeof(TickRecord)), 0) << "tick " << i;
 }
@@ -66,6 +68,8 @@ TEST(TrajectoryFile, ErrorsNameFileAndLine) {
   EXPECT_NE(parse_error_of(head + "tick 0 0 0 1 2 3\n").find("needs 15 values"), std::string::npos);
   EXPECT_NE(parse_error_of(head + "tick 0 0 0 nan 0 0 0 0 0 0 0 0 0 0 0\n").find("non-finite"),
             std::string::npos);
+  EXPECT_NE(parse_error_of(head + "param H\n").find("param needs a name and a value"), std::string::npos);
+  EXPECT_NE(parse_error_of(head + "param max force x\n").find("'x'"), std::string::npos);
   EXPECT_NE(parse_error_of(head + "wobble 3\n").find("unknown keyword 'wobble'"), std::string::npos);
   EXPECT_NE(parse_error_of(head + "rate 0\n").find("rate must be"), std::string::npos);
   EXPECT_NE(parse_error_of(head).find("no tick lines"), std::string::npos);
