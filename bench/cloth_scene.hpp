@@ -1,12 +1,18 @@
-// The cloth scene shared by the physics benchmarks and the instruction counter: an n × n grid
-// cloth of side 1 m, two corners pinned and carried towards each other so that it falls, folds
-// and crumples against itself.
+// The cloth scenes shared by the physics benchmarks, the instruction counter and the live haptics
+// benchmark: an n × n grid cloth of side 1 m, lying horizontally (x–z plane, y up), as a Scene built
+// by the one world builder (scenario/world_builder). Two corners pinned and carried towards each
+// other make it fall, fold and crumple against itself; folded in half onto a pinned lower half it
+// rests on itself, the contact-heavy case.
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
+#include "io/scene.hpp"
 #include "physics/world.hpp"
+#include "scenario/world_builder.hpp"
+#include "shape/generators.hpp"
 #include "shape/grid_mesh.hpp"
 
 namespace s4d::bench {
@@ -26,14 +32,49 @@ Surface<D> flat_cloth(int n, double size) {
   return s;
 }
 
-template <int D>
-PhysicsParams<D> cloth_params(int n) {
-  PhysicsParams<D> p;
-  p.gravity[1] = -9.81;
-  p.thickness = 0.4 / (n - 1);  // δ: 40 % of the grid step
-  p.stiffness = 200;
+// The scene's physics: δ is 40 % of the grid step.
+inline PhysicsSettings cloth_settings(int n) {
+  PhysicsSettings p;
+  p.gravity = Vec4(0, -9.81, 0, 0);  // m/s²
+  p.thickness = 0.4 / (n - 1);       // m
+  p.stiffness = 200;                 // N/m
   p.friction = 0.3;
   return p;
+}
+
+template <int D>
+PhysicsParams<D> cloth_params(int n) {
+  return physics_params<D>(cloth_settings(n));
+}
+
+// The flat cloth as a scene. In R^4 it is the "cloth" generator's (xy plane) turned a quarter in yz,
+// the same vertices and triangles as flat_cloth<4>; in R^3, where there is no cloth generator, the
+// mesh flat_cloth<3> itself.
+template <int D>
+Scene flat_cloth_scene(int n) {
+  Scene s;
+  s.description = "a horizontal cloth of side 1 m";
+  SceneObject o;
+  o.name = "cloth";
+  if constexpr (D == 4) {
+    o.generator = GeneratorCall{"cloth", {{"n", n}, {"size", 1.0}}};
+    Mat<4> m = Mat<4>::Identity();
+    m(1, 1) = m(2, 2) = 0;
+    m(2, 1) = 1;   // y → z
+    m(1, 2) = -1;  // z → −y
+    o.placement.matrix = m;
+    o.shape = placed(generate("cloth", o.generator->params), o.placement);
+  } else {
+    o.shape = flat_cloth<D>(n, 1.0);
+  }
+  s.objects.push_back(std::move(o));
+  s.physics = cloth_settings(n);
+  return s;
+}
+
+template <int D>
+std::unique_ptr<World<D>> world_of(const Scene& scene) {
+  return std::make_unique<World<D>>(build_world<D>(scene).world);
 }
 
 // Corners (0,0) and (0,n-1) pinned and carried towards each other, (n-1,·) corners free: the
@@ -54,9 +95,7 @@ void drive_corners(World<D>& w, int n, double t) {
 
 template <int D>
 std::unique_ptr<World<D>> crumpled_cloth(int n, int settle_steps) {
-  ModelBuilder<D> b(cloth_params<D>(n));
-  b.add_body(flat_cloth<D>(n, 1.0));
-  auto w = std::make_unique<World<D>>(b.build());
+  auto w = world_of<D>(flat_cloth_scene<D>(n));
   w->pin(0);
   w->pin(n - 1);
   for (int s = 0; s < settle_steps; ++s) {
@@ -90,18 +129,34 @@ Surface<D> folded_cloth(int n, double gap) {
   return s;
 }
 
-// That cloth (layers 1.6 δ apart), its lower half pinned flat like a table: gravity lays the
-// upper half onto it, so every step has a layer of resting contacts, the contact-heavy case the
-// free-folding cloth lacks.
+// That cloth (layers 1.6 δ apart) as a scene: a mesh object, there being no generator of it.
 template <int D>
-std::unique_ptr<World<D>> folded_cloth_on_table(int n) {
-  const PhysicsParams<D> params = cloth_params<D>(n);
-  ModelBuilder<D> b(params);
-  b.add_body(folded_cloth<D>(n, 1.6 * params.thickness));
-  auto w = std::make_unique<World<D>>(b.build());
+Scene folded_cloth_scene(int n) {
+  Scene s;
+  s.description = "a cloth folded in half onto itself, its lower half pinned flat like a table";
+  s.physics = cloth_settings(n);
+  SceneObject o;
+  o.name = "cloth";
+  o.shape = folded_cloth<D>(n, 1.6 * s.physics.thickness);
+  s.objects.push_back(std::move(o));
+  return s;
+}
+
+// The lower half's vertices, pinned like a table (all but the rows next to the fold).
+inline std::vector<int> folded_cloth_table(int n) {
+  std::vector<int> v;
   for (int i = 0; i < n; ++i)
     if (static_cast<double>(i) / (n - 1) < 0.5 - 1.0 / (n - 1))
-      for (int j = 0; j < n; ++j) w->pin(i * n + j);
+      for (int j = 0; j < n; ++j) v.push_back(i * n + j);
+  return v;
+}
+
+// That cloth, its table pinned: gravity lays the upper half onto it, so every step has a layer of
+// resting contacts, the contact-heavy case the free-folding cloth lacks.
+template <int D>
+std::unique_ptr<World<D>> folded_cloth_on_table(int n) {
+  auto w = world_of<D>(folded_cloth_scene<D>(n));
+  for (int v : folded_cloth_table(n)) w->pin(v);
   return w;
 }
 

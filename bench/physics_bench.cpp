@@ -1,6 +1,7 @@
 // Physics step costs (issue 5): a crumpled 4D cloth with self-collision at 64² and 128², the spun
 // trefoil at scenario resolution, and the peer comparison with Bullet's btSoftBody on the same 3D
-// cloth (steps per second and pass-throughs left, side by side).
+// cloth (steps per second and pass-throughs left, side by side). Every world is a scene built by the
+// one world builder.
 #include <benchmark/benchmark.h>
 
 #include <btBulletDynamicsCommon.h>
@@ -11,8 +12,10 @@
 #include <chrono>
 #include <memory>
 
+#include "io/scene.hpp"
 #include "physics/world.hpp"
 #include "proximity/mesh_proximity.hpp"
+#include "scenario/world_builder.hpp"
 #include "shape/generators.hpp"
 #include "shape/grid_mesh.hpp"
 
@@ -21,10 +24,9 @@
 namespace s4d {
 namespace {
 
-using bench::cloth_params;
 using bench::crumpled_cloth;
 using bench::drive_corners;
-using bench::flat_cloth;
+using bench::flat_cloth_scene;
 using bench::folded_cloth_on_table;
 
 template <int D>
@@ -85,13 +87,15 @@ void BM_Cloth4DFoldedContactStep(benchmark::State& state) {
 BENCHMARK(BM_Cloth4DFoldedContactStep)->Arg(64)->Iterations(300)->Unit(benchmark::kMillisecond);
 
 void BM_SpunTrefoilStep(benchmark::State& state) {
-  const Shape s = generate("spun-trefoil", {{"n", 64}, {"m", 12}});
-  PhysicsParams<4> p;
-  p.thickness = 0.03;
-  p.stiffness = 300;
-  ModelBuilder<4> b(p);
-  b.add_body(std::get<Surface<4>>(s));
-  World<4> w(b.build());
+  Scene scene;
+  SceneObject o;
+  o.name = "sphere";
+  o.generator = GeneratorCall{"spun-trefoil", {{"n", 64}, {"m", 12}}};
+  o.shape = generate("spun-trefoil", o.generator->params);
+  scene.objects.push_back(std::move(o));
+  scene.physics.thickness = 0.03;  // m
+  scene.physics.stiffness = 300;   // N/m
+  World<4> w = build_world<4>(scene).world;
   const int last = w.vertex_count() - 1;
   w.set_external_force(0, Vec4(-2, 0, 0, 0));
   w.set_external_force(last, Vec4(2, 0, 0, 0));
@@ -110,9 +114,7 @@ void BM_Peer3DCloth_s4d(benchmark::State& state) {
   int bad = 0;
   double steps_per_s = 0;
   for (auto _ : state) {
-    ModelBuilder<3> b(cloth_params<3>(n));
-    b.add_body(flat_cloth<3>(n, 1.0));
-    World<3> w(b.build());
+    World<3> w = build_world<3>(flat_cloth_scene<3>(n)).world;
     w.pin(0);
     w.pin(n - 1);
     const auto t0 = std::chrono::steady_clock::now();
