@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "demo_report.hpp"
 #include "core/error.hpp"
 #include "core/plane.hpp"
 #include "io/image.hpp"
@@ -30,12 +31,6 @@ struct RunArgs {
   bool no_png = false;
   bool hash = false;
 };
-
-std::string fmt(double x, int prec = 3) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", prec, x);
-  return b;
-}
 
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
@@ -109,10 +104,17 @@ void run(const RunArgs& args) {
   if (!png_error.empty()) metrics["png_error"] = png_error;
   std::ofstream(out / "metrics.json") << metrics.dump(2) << "\n";
 
-  std::cout << (ok ? "PASS " : "FAIL ") << sc.name << ": " << v.detail << "; " << total_intersections
-            << " true intersections in " << frame_log.size() << " frames (min gap " << fmt(min_gap) << ", hard layer "
-            << fmt(m.hard_thickness) << "); " << m.vertices << " vertices, " << steps << " steps, " << fmt(ms)
-            << " ms/step, " << w.rollbacks << " rollbacks, " << w.global_freezes << " global freezes" << std::endl;
+  RunFacts facts;
+  facts.name = sc.name;
+  facts.verdict = v;
+  facts.checks = static_cast<int>(frame_log.size());
+  facts.intersections = total_intersections;
+  facts.min_gap = min_gap;
+  facts.model = m;
+  facts.steps = steps;
+  facts.ms_per_step = ms;
+  facts.warnings = w;
+  std::cout << verdict_line(facts) << std::endl;
   if (args.hash) {
     char h[32];
     std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(run->state_hash()));

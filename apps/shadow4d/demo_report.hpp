@@ -31,8 +31,7 @@ struct RunFacts {
   bool pass() const { return verdict.pass && intersections == 0 && min_gap > 0; }
 };
 // "PASS name: detail; 0 true intersections in 201 states checked (min gap 0.03, hard layer
-// 0.0075); ..." in the words of `shadow4d run` (which checks its frames only), so the two can be
-// compared line for line.
+// 0.0075); ...": the line `shadow4d run` (which checks its saved frames) and the demo print.
 std::string verdict_line(const RunFacts& facts);
 
 }  // namespace s4d::cli
