@@ -201,6 +201,80 @@ PhysicsSettings parse_physics(const Json& j, const Ctx& ctx) {
   return p;
 }
 
+// A point of R^dim.
+template <int D>
+Vec<D> point(const Json& j, const Ctx& ctx) {
+  const auto v = numbers(j, ctx, {static_cast<std::size_t>(D)});
+  Vec<D> p;
+  for (int k = 0; k < D; ++k) p[k] = v[static_cast<std::size_t>(k)];
+  return p;
+}
+
+template <int D>
+Shape parse_geometry_in(const Json& j, const Ctx& ctx) {
+  if (j.contains("components")) {
+    Curve<D> c;
+    const Ctx cc = ctx.at("components");
+    if (!j["components"].is_array()) cc.fail("must be an array of curve components");
+    for (std::size_t i = 0; i < j["components"].size(); ++i) {
+      const Json& comp = j["components"][i];
+      const Ctx pc = cc.at(i);
+      require_object(comp, pc);
+      check_keys(comp, pc, {"closed", "points"});
+      Polyline<D> line;
+      if (comp.contains("closed")) line.closed = boolean(comp["closed"], pc.at("closed"));
+      if (!comp.contains("points") || !comp["points"].is_array()) pc.at("points").fail("must be an array of points");
+      for (std::size_t k = 0; k < comp["points"].size(); ++k)
+        line.points.push_back(point<D>(comp["points"][k], pc.at("points").at(k)));
+      if (line.points.size() < 2) pc.at("points").fail("a component needs at least 2 points");
+      c.components.push_back(std::move(line));
+    }
+    return c;
+  }
+  Surface<D> s;
+  if (!j.contains("vertices") || !j["vertices"].is_array()) ctx.at("vertices").fail("must be an array of points");
+  for (std::size_t k = 0; k < j["vertices"].size(); ++k) s.vertices.push_back(point<D>(j["vertices"][k], ctx.at("vertices").at(k)));
+  if (!j.contains("triangles") || !j["triangles"].is_array()) ctx.at("triangles").fail("must be an array of index triples");
+  const double nv = static_cast<double>(s.vertices.size());
+  for (std::size_t k = 0; k < j["triangles"].size(); ++k) {
+    const Ctx tc = ctx.at("triangles").at(k);
+    const auto t = numbers(j["triangles"][k], tc, {3});
+    Triangle tri;
+    for (int c = 0; c < 3; ++c) {
+      const double i = t[static_cast<std::size_t>(c)];
+      if (i < 0 || i >= nv || i != std::floor(i)) tc.fail("vertex index " + format_double(i) + " is not one of the " +
+                                                             format_double(nv) + " vertices");
+      tri[static_cast<std::size_t>(c)] = static_cast<int>(i);
+    }
+    s.triangles.push_back(tri);
+  }
+  if (j.contains("grid")) {
+    const Ctx gc = ctx.at("grid");
+    require_object(j["grid"], gc);
+    check_keys(j["grid"], gc, {"rows", "cols", "wrap_i", "wrap_j"});
+    Grid g;
+    g.rows = static_cast<int>(number_in(j["grid"].value("rows", Json()), gc.at("rows"), 1, 1e7));
+    g.cols = static_cast<int>(number_in(j["grid"].value("cols", Json()), gc.at("cols"), 1, 1e7));
+    if (j["grid"].contains("wrap_i")) g.wrap_i = boolean(j["grid"]["wrap_i"], gc.at("wrap_i"));
+    if (j["grid"].contains("wrap_j")) g.wrap_j = boolean(j["grid"]["wrap_j"], gc.at("wrap_j"));
+    if (static_cast<double>(g.rows) * g.cols != nv) gc.fail("rows x cols must be the vertex count");
+    s.grid = g;
+  }
+  return s;
+}
+
+// Inline geometry (what a session stores): {"dim": 3|4, "vertices", "triangles"[, "grid"]} for
+// a surface, {"dim", "components": [{"closed", "points"}]} for a curve.
+Shape parse_geometry(const Json& j, const Ctx& ctx) {
+  require_object(j, ctx);
+  check_keys(j, ctx, {"dim", "vertices", "triangles", "grid", "components"});
+  const double dim = number(j.value("dim", Json()), ctx.at("dim"));
+  if (dim != 3 && dim != 4) ctx.at("dim").fail("must be 3 or 4");
+  if (j.contains("components") && (j.contains("vertices") || j.contains("triangles")))
+    ctx.fail("a curve (components) or a surface (vertices, triangles), not both");
+  return dim == 3 ? parse_geometry_in<3>(j, ctx) : parse_geometry_in<4>(j, ctx);
+}
+
 // An object's placement keys: "matrix" (4 rows of 4 numbers, or 16 in a row), "scale",
 // "mirror" (axes 0-3), "w_by_row", "offset" (3 or 4 numbers).
 Placement parse_placement(const Json& j, const Ctx& ctx) {
@@ -238,10 +312,21 @@ Placement parse_placement(const Json& j, const Ctx& ctx) {
 
 SceneObject parse_object(const Json& j, const Ctx& ctx, const std::filesystem::path& base) {
   require_object(j, ctx);
-  check_keys(j, ctx, {"name", "generator", "params", "path", "offset", "colour", "matrix", "scale", "mirror",
-                      "w_by_row", "mass"});
-  const bool gen = j.contains("generator"), file = j.contains("path");
-  if (gen == file) ctx.fail("needs exactly one of 'generator' or 'path'");
+  check_keys(j, ctx, {"name", "generator", "params", "path", "geometry", "offset", "colour", "matrix", "scale",
+                      "mirror", "w_by_row", "mass"});
+  const bool gen = j.contains("generator"), file = j.contains("path"), inline_shape = j.contains("geometry");
+  if (gen + file + inline_shape != 1) ctx.fail("needs exactly one of 'generator', 'path' or 'geometry'");
+  if (inline_shape) {
+    SceneObject o;
+    o.name = j.contains("name") ? string(j["name"], ctx.at("name")) : "object";
+    if (o.name.empty()) ctx.at("name").fail("must not be empty");
+    for (const char* k : {"params", "offset", "matrix", "scale", "mirror", "w_by_row"})
+      if (j.contains(k)) ctx.at(k).fail("inline geometry is stored as it is placed: no placement keys");
+    if (j.contains("colour")) o.colour = colour(j["colour"], ctx.at("colour"));
+    if (j.contains("mass")) o.mass = number_in(j["mass"], ctx.at("mass"), 0, 1e6);
+    o.shape = parse_geometry(j["geometry"], ctx.at("geometry"));
+    return o;
+  }
   if (j.contains("params") && !gen) ctx.fail("'params' is only allowed with 'generator'");
   SceneObject o;
   if (j.contains("name")) {

@@ -94,6 +94,12 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin);
 // Writes a scene. Generated objects are stored by generator call; loaded objects by path;
 // objects with neither (edited geometry) are written as meshes beside the scene file.
 void save_scene(const Scene& scene, const std::filesystem::path& path);
+// How objects are written: by recipe (a generator call, a path, edited geometry in a mesh file
+// beside the scene), or inline (every point, as a session keeps the state it had).
+enum class ObjectStorage { kByRecipe, kInline };
+// The scene's JSON text (what save_scene writes); `path` is where it will live (relative paths
+// and mesh files beside it). Throws Error like save_scene.
+std::string scene_text(const Scene& scene, const std::filesystem::path& path, ObjectStorage storage);
 
 // Loads any object file by extension: .off/.4off/.noff (surfaces), .vect/.4vect/.txt/.xyz/.curve
 // (curves), or a generator call such as "spun-trefoil:n=48". Throws Error/ParseError.

@@ -60,9 +60,42 @@ void write_placement(const Placement& p, Json& j) {
   if (!p.offset.isZero(0)) j["offset"] = array(p.offset, 4);
 }
 
+
+// A shape as the "geometry" of an object: every point and triangle, inline.
+Json geometry_json(const Shape& shape) {
+  Json g;
+  std::visit([&](const auto& s) {
+    using T = std::decay_t<decltype(s)>;
+    constexpr int D = T::kDim;
+    g["dim"] = D;
+    if constexpr (std::is_same_v<T, Surface<D>>) {
+      Json v = Json::array(), t = Json::array();
+      for (const auto& p : s.vertices) v.push_back(array(p, D));
+      for (const Triangle& tri : s.triangles) t.push_back(Json::array({tri[0], tri[1], tri[2]}));
+      g["vertices"] = std::move(v);
+      g["triangles"] = std::move(t);
+      if (s.grid)
+        g["grid"] = {{"rows", s.grid->rows}, {"cols", s.grid->cols}, {"wrap_i", s.grid->wrap_i}, {"wrap_j", s.grid->wrap_j}};
+    } else {
+      Json comps = Json::array();
+      for (const auto& c : s.components) {
+        Json pts = Json::array();
+        for (const auto& p : c.points) pts.push_back(array(p, D));
+        comps.push_back({{"closed", c.closed}, {"points", std::move(pts)}});
+      }
+      g["components"] = std::move(comps);
+    }
+  }, shape);
+  return g;
+}
+
 }  // namespace
 
 void save_scene(const Scene& scene, const std::filesystem::path& path) {
+  write_text_file(path, scene_text(scene, path, ObjectStorage::kByRecipe));
+}
+
+std::string scene_text(const Scene& scene, const std::filesystem::path& path, ObjectStorage storage) {
   const std::filesystem::path dir = path.parent_path();
   Json root;
   root["version"] = kSceneVersion;
@@ -72,7 +105,9 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
   for (const SceneObject& o : scene.objects) {
     Json j;
     j["name"] = o.name;
-    if (o.generator) {
+    if (storage == ObjectStorage::kInline) {
+      j["geometry"] = geometry_json(o.shape);
+    } else if (o.generator) {
       j["generator"] = o.generator->name;
       Json params = Json::object();
       for (const auto& [k, v] : o.generator->params) {
@@ -152,7 +187,7 @@ void save_scene(const Scene& scene, const std::filesystem::path& path) {
   } catch (const Json::exception& e) {  // e.g. an object name that is not valid UTF-8
     throw Error("cannot save scene " + path.string() + ": " + e.what());
   }
-  write_text_file(path, text);
+  return text;
 }
 
 }  // namespace s4d

@@ -1,0 +1,159 @@
+// The session's JSON: {"shadow4d_session": version, "scene": {...}, "simulation": {...},
+// "view": {...}, "tool", "history": [...], "history_head", "clean_exit"}.
+#include "io/session_file.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text_scanner.hpp"
+
+namespace s4d {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Ctx {
+  std::string file;
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw ParseError(file, 0, where + ": " + what);
+  }
+  double number(const Json& j, const std::string& where) const {
+    if (!j.is_number()) fail(where, "must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(where, "must be finite");
+    return v;
+  }
+  std::vector<double> numbers(const Json& j, const std::string& where) const {
+    if (!j.is_array()) fail(where, "must be an array of numbers");
+    std::vector<double> v;
+    v.reserve(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) v.push_back(number(j[i], where + "[" + std::to_string(i) + "]"));
+    return v;
+  }
+};
+
+}  // namespace
+
+std::string session_text(const SessionFile& s) {
+  Json root;
+  root["shadow4d_session"] = kSessionVersion;
+  root["opened"] = s.opened;
+  root["scene"] = Json::parse(scene_text(s.scene, "session.s4d", ObjectStorage::kInline));
+  const SimulationState& sim = s.simulation;
+  root["simulation"] = {{"dim", sim.dim},           {"positions", sim.positions}, {"velocities", sim.velocities},
+                        {"pinned", sim.pinned},     {"time", sim.time},           {"playing", sim.playing}};
+  Json base = Json::array();
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) base.push_back(s.view.base_frame.matrix()(r, k));
+  const auto& q = s.view.trackball;
+  root["view"] = {{"angles", s.view.angles}, {"base_frame", base},
+                  {"trackball", {q.w(), q.x(), q.y(), q.z()}}, {"zoom", s.view.zoom}};
+  root["tool"] = s.tool;
+  root["history"] = s.history;
+  root["history_head"] = s.history_head;
+  root["clean_exit"] = s.clean_exit;
+  try {
+    return root.dump(1) + "\n";
+  } catch (const Json::exception& e) {  // e.g. a name that is not UTF-8
+    throw Error(std::string("cannot write the session: ") + e.what());
+  }
+}
+
+SessionFile parse_session(const std::string& text, const std::filesystem::path& origin) {
+  const Ctx c{origin.string()};
+  Json root;
+  try {
+    root = Json::parse(text);
+  } catch (const Json::exception& e) {
+    throw ParseError(c.file, 0, std::string("not a session (damaged or not JSON): ") + e.what());
+  }
+  if (!root.is_object() || !root.contains("shadow4d_session")) c.fail("shadow4d_session", "missing: this is no session file");
+  const double version = c.number(root["shadow4d_session"], "shadow4d_session");
+  if (version > kSessionVersion)
+    c.fail("shadow4d_session", "written by a newer shadow4d (version " + format_double(version) + "); this one reads " +
+                                   std::to_string(kSessionVersion));
+  if (version < 1 || version != std::floor(version)) c.fail("shadow4d_session", "not a version number");
+  for (const auto& [k, v] : root.items())
+    if (k != "shadow4d_session" && k != "opened" && k != "scene" && k != "simulation" && k != "view" && k != "tool" &&
+        k != "history" && k != "history_head" && k != "clean_exit")
+      c.fail(k, "unknown key");
+  SessionFile s;
+  if (root.contains("opened")) {
+    if (!root["opened"].is_string()) c.fail("opened", "must be a string");
+    s.opened = root["opened"].get<std::string>();
+  }
+  if (!root.contains("scene") || !root["scene"].is_object()) c.fail("scene", "missing");
+  s.scene = parse_scene(root["scene"].dump(), origin);  // errors name the file and the key
+  if (root.contains("simulation")) {
+    const Json& j = root["simulation"];
+    if (!j.is_object()) c.fail("simulation", "must be an object");
+    SimulationState& sim = s.simulation;
+    sim.dim = static_cast<int>(c.number(j.value("dim", Json(0)), "simulation.dim"));
+    if (sim.dim != 0 && sim.dim != 3 && sim.dim != 4) c.fail("simulation.dim", "must be 0, 3 or 4");
+    sim.positions = c.numbers(j.value("positions", Json::array()), "simulation.positions");
+    sim.velocities = c.numbers(j.value("velocities", Json::array()), "simulation.velocities");
+    if (sim.dim > 0 && sim.positions.size() % static_cast<std::size_t>(sim.dim) != 0)
+      c.fail("simulation.positions", "is not a whole number of points of R^" + std::to_string(sim.dim));
+    if (!sim.velocities.empty() && sim.velocities.size() != sim.positions.size())
+      c.fail("simulation.velocities", "must have as many values as the positions");
+    const std::size_t nv = sim.dim > 0 ? sim.positions.size() / static_cast<std::size_t>(sim.dim) : 0;
+    for (double v : c.numbers(j.value("pinned", Json::array()), "simulation.pinned")) {
+      if (v < 0 || v >= static_cast<double>(nv) || v != std::floor(v)) c.fail("simulation.pinned", "vertex " + format_double(v) + " is not one of the " + std::to_string(nv));
+      sim.pinned.push_back(static_cast<int>(v));
+    }
+    sim.time = c.number(j.value("time", Json(0)), "simulation.time");
+    if (j.contains("playing")) {
+      if (!j["playing"].is_boolean()) c.fail("simulation.playing", "must be true or false");
+      sim.playing = j["playing"].get<bool>();
+    }
+  }
+  if (root.contains("view")) {
+    const Json& j = root["view"];
+    if (!j.is_object()) c.fail("view", "must be an object");
+    const auto a = c.numbers(j.value("angles", Json::array({0, 0, 0, 0, 0, 0})), "view.angles");
+    if (a.size() != 6) c.fail("view.angles", "must be 6 angles (xy xz xw yz yw zw)");
+    for (int i = 0; i < 6; ++i) s.view.angles[static_cast<std::size_t>(i)] = static_cast<float>(a[static_cast<std::size_t>(i)]);
+    if (j.contains("base_frame")) {
+      const auto m = c.numbers(j["base_frame"], "view.base_frame");
+      if (m.size() != 16) c.fail("view.base_frame", "must be 16 numbers (a 4 x 4 rotation, row by row)");
+      Mat<4> r;
+      for (int i = 0; i < 16; ++i) r(i / 4, i % 4) = m[static_cast<std::size_t>(i)];
+      s.view.base_frame = Frame<4>(r);
+    }
+    const auto t = c.numbers(j.value("trackball", Json::array({1, 0, 0, 0})), "view.trackball");
+    if (t.size() != 4 || !(std::hypot(std::hypot(t[0], t[1]), std::hypot(t[2], t[3])) > 1e-9))
+      c.fail("view.trackball", "must be a non-zero quaternion [w, x, y, z]");
+    s.view.trackball = Eigen::Quaterniond(t[0], t[1], t[2], t[3]).normalized();
+    s.view.zoom = c.number(j.value("zoom", Json(1)), "view.zoom");
+    if (!(s.view.zoom > 0)) c.fail("view.zoom", "must be positive");
+  }
+  if (root.contains("tool")) {
+    if (!root["tool"].is_string()) c.fail("tool", "must be a string");
+    s.tool = root["tool"].get<std::string>();
+  }
+  if (root.contains("history")) {
+    if (!root["history"].is_array()) c.fail("history", "must be an array of labels");
+    for (const Json& h : root["history"]) {
+      if (!h.is_string()) c.fail("history", "must be an array of labels");
+      s.history.push_back(h.get<std::string>());
+    }
+  }
+  s.history_head = static_cast<int>(c.number(root.value("history_head", Json(static_cast<double>(s.history.size()))), "history_head"));
+  if (s.history_head < 0 || s.history_head > static_cast<int>(s.history.size())) c.fail("history_head", "is outside the history");
+  if (root.contains("clean_exit")) {
+    if (!root["clean_exit"].is_boolean()) c.fail("clean_exit", "must be true or false");
+    s.clean_exit = root["clean_exit"].get<bool>();
+  }
+  return s;
+}
+
+SessionFile read_session(const std::filesystem::path& path) { return parse_session(read_text_file(path), path); }
+
+void write_session(const SessionFile& session, const std::filesystem::path& path, int keep) {
+  write_file_atomically(path, session_text(session), keep);
+}
+
+}  // namespace s4d

@@ -1,0 +1,54 @@
+// Session files (.s4d): everything a user's work is — the scene with every object's current
+// shape inline, the live simulation's state (positions, velocities, pins, time), the 4D frame
+// and view, the tool and the undo history's labels — as versioned JSON. A session written by an
+// older version opens; a newer or damaged one is refused with what is wrong.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/scene.hpp"
+
+namespace s4d {
+
+inline constexpr int kSessionVersion = 1;
+
+struct SimulationState {
+  int dim = 0;                     // 3 or 4; 0: nothing was simulated
+  std::vector<double> positions;   // nv × dim, the World's vertices in body order
+  std::vector<double> velocities;  // nv × dim
+  std::vector<int> pinned;         // vertices held where they are
+  double time = 0;                 // s simulated
+  bool playing = false;
+};
+
+// The window's view beyond the scene's own: the six 4D slider angles over the base frame, the
+// trackball and the zoom.
+struct SessionView {
+  std::array<float, 6> angles{};  // degrees, xy xz xw yz yw zw
+  Frame<4> base_frame;
+  Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();
+  double zoom = 1;
+};
+
+struct SessionFile {
+  Scene scene;                     // objects inline as they are now, view, physics, scenario
+  std::string opened;              // what the session began from (a scene or scenario file)
+  SimulationState simulation;
+  SessionView view;
+  std::string tool;                // the active tool's name
+  std::vector<std::string> history;  // labels of the undoable steps, oldest first
+  int history_head = 0;            // how many of them are done (the rest were undone)
+  bool clean_exit = true;          // an autosave says false until the app has quit normally
+};
+
+std::string session_text(const SessionFile& session);
+// Throws ParseError("file: where: what") on anything malformed; a session of a newer version is
+// refused by name ("written by a newer shadow4d (version 3); this one reads 1").
+SessionFile parse_session(const std::string& text, const std::filesystem::path& origin);
+SessionFile read_session(const std::filesystem::path& path);
+// Atomic (io/atomic_file.hpp); `keep` older versions are kept beside it.
+void write_session(const SessionFile& session, const std::filesystem::path& path, int keep = 0);
+
+}  // namespace s4d
