@@ -137,7 +137,7 @@ Frame<4> parse_frame(const Json& j, const Ctx& ctx) {
 ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   require_object(j, ctx);
   check_keys(j, ctx, {"trackball", "distance", "fov_deg", "depth_colour", "colour_map", "wireframe", "shadow",
-                      "intersections", "tube_radius", "opacity", "background"});
+                      "intersections", "tube_radius", "curve_mode", "opacity", "background"});
   ViewSettings v;
   if (j.contains("trackball")) {
     const auto q = numbers(j["trackball"], ctx.at("trackball"), {4});
@@ -160,6 +160,12 @@ ViewSettings parse_view(const Json& j, const Ctx& ctx) {
   if (j.contains("intersections")) v.intersections = boolean(j["intersections"], ctx.at("intersections"));
   if (j.contains("tube_radius"))
     v.tube_radius = number_in(j["tube_radius"], ctx.at("tube_radius"), 0, 1e6, true);
+  if (j.contains("curve_mode")) {
+    const std::string name = string(j["curve_mode"], ctx.at("curve_mode"));
+    const auto mode = parse_curve_mode(name);
+    if (!mode) ctx.at("curve_mode").fail("unknown curve mode '" + name + "' (use tubes, shadow or diagram)");
+    v.curve_mode = *mode;
+  }
   // Below 0.05 a surface all but vanishes, which reads as a bug rather than a setting.
   if (j.contains("opacity")) v.opacity = number_in(j["opacity"], ctx.at("opacity"), 0.05, 1);
   if (j.contains("background")) v.background = colour(j["background"], ctx.at("background"));

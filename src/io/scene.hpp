@@ -29,6 +29,27 @@ struct SceneObject {
   double mass = 0;                           // kg per vertex in the simulation; 0 = physics.mass
 };
 
+// How curves are drawn (the paper's Fig. 1): kTubes, lit tubes (c); kShadow, the plain shadow,
+// the curve's image as a flat strip of one width with no lighting (a); kDiagram, the 2½D crossing
+// diagram, flat strands with a gap in the under strand at every crossing of the view (b).
+// Surfaces are drawn as they are in every mode; depth colour applies in every mode.
+enum class CurveMode { kTubes, kShadow, kDiagram };
+
+// "tubes", "shadow", "diagram": the names in scene files and on the command line.
+inline const char* curve_mode_name(CurveMode m) {
+  switch (m) {
+    case CurveMode::kShadow: return "shadow";
+    case CurveMode::kDiagram: return "diagram";
+    case CurveMode::kTubes: break;
+  }
+  return "tubes";
+}
+inline std::optional<CurveMode> parse_curve_mode(const std::string& name) {
+  for (CurveMode m : {CurveMode::kTubes, CurveMode::kShadow, CurveMode::kDiagram})
+    if (name == curve_mode_name(m)) return m;
+  return std::nullopt;
+}
+
 struct ViewSettings {
   Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();  // 3D camera orientation
   double distance = 0;         // camera distance; 0 = fit the scene's bounding sphere
@@ -45,6 +66,9 @@ struct ViewSettings {
   // over strand of each crossing of the curves as the camera sees them.
   bool intersections = false;
   double tube_radius = 0.03;   // curve tube radius, in scene units
+  // Tubes, the plain shadow or the crossing diagram; the flat strands are as wide on the screen
+  // as a tube at the centre of the view.
+  CurveMode curve_mode = CurveMode::kTubes;
   // When fit_radius > 0 the camera frames this ball (shadow space) instead of the drawn objects:
   // the window fixes it while a simulation moves them, so the view holds still under the hand.
   // Not stored in scene files.

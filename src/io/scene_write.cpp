@@ -152,6 +152,7 @@ std::string scene_text(const Scene& scene, const std::filesystem::path& path, Ob
   view["shadow"] = v.shadow;
   view["intersections"] = v.intersections;
   view["tube_radius"] = number(v.tube_radius);
+  view["curve_mode"] = std::string(curve_mode_name(v.curve_mode));
   view["opacity"] = number(v.opacity);
   view["background"] = array(v.background, 3);
   root["view"] = std::move(view);

@@ -279,6 +279,29 @@ TEST(Scene, OpacityIsReadCheckedAndSavedBack) {
   EXPECT_EQ(load_scene(dir / "o.json").view.opacity, 0.4);
 }
 
+// view.curve_mode: tubes by default, the three names read, anything else refused with the names
+// to use, and the mode written back.
+TEST(Scene, CurveModeIsReadCheckedAndSavedBack) {
+  EXPECT_EQ(parse_scene(R"({"version": 1})", "m.json").view.curve_mode, CurveMode::kTubes);
+  for (const CurveMode m : {CurveMode::kTubes, CurveMode::kShadow, CurveMode::kDiagram}) {
+    const std::string name = curve_mode_name(m);
+    SCOPED_TRACE(name);
+    EXPECT_EQ(parse_curve_mode(name), m);
+    const Scene s = parse_scene(R"({"version": 1, "view": {"curve_mode": ")" + name + R"("}})", "m.json");
+    EXPECT_EQ(s.view.curve_mode, m);
+    test::TempDir dir;
+    save_scene(s, dir / "m.json");
+    EXPECT_EQ(load_scene(dir / "m.json").view.curve_mode, m);
+    const std::string written = "\"curve_mode\": \"" + name + "\"";
+    EXPECT_NE(scene_text(s, dir / "m.json", ObjectStorage::kByRecipe).find(written), std::string::npos);
+  }
+  EXPECT_EQ(parse_curve_mode("Tubes"), std::nullopt);
+  test::expect_parse_error([] { parse_scene(R"({"version": 1, "view": {"curve_mode": "ribbon"}})", "m.json"); }, 0,
+                           "view.curve_mode: unknown curve mode 'ribbon' (use tubes, shadow or diagram)");
+  test::expect_parse_error([] { parse_scene(R"({"version": 1, "view": {"curve_mode": 2}})", "m.json"); }, 0,
+                           "view.curve_mode: must be a string");
+}
+
 TEST(Scene, SaveIntoAMissingFolderFailsCleanly) {
   test::TempDir dir;
   EXPECT_THROW(save_scene(Scene{}, dir / "no" / "such" / "s.json"), Error);
