@@ -96,6 +96,13 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
     }
     if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
+    if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) {
+      const bool redo = in.shift();
+      const std::string label = redo ? (session.history().undone_labels().empty() ? "" : session.history().undone_labels().front())
+                                     : (session.history().done_labels().empty() ? "" : session.history().done_labels().back());
+      if (redo ? session.redo() : session.undo()) model.status = (redo ? "redo: " : "undo: ") + label;
+      else model.status = redo ? "nothing to redo" : "nothing to undo";
+    }
     if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
     if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
       const bool playing = session.snapshot()->status.playing;
@@ -122,7 +129,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
     if (in.pressed(1)) {
       std::string message;
-      if (change_crossing_under(ti.view, model.scene(), message)) model.status = message;
+      if (change_crossing_under(ti.view, session, message)) model.status = message;
       else if (tool) tool->right_click(ti, session);
     }
     {
@@ -133,6 +140,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
         const bool navigate = (in.shift() && !sketch) || in.ctrl();
         r.tool_drag = tool && !navigate && tool->press(ti, session);
         r.view_drag = !r.tool_drag;
+        if (r.view_drag && navigate) session.record("turn in 4D");  // the 4D frame is the user's work
       } else if (in.down(0) && r.tool_drag) {
         tool->drag(ti, session);
       } else if (in.down(0) && r.view_drag) {
@@ -316,6 +324,12 @@ int run_gui_app(const GuiOptions& options) {
     HapticsWindow haptics;
     GuiModel model;
     model.audio = std::make_unique<AudioPlayer>();
+    model.session.capture_view = [&model](DocumentState& d) {
+      d.angles = model.view.plane_angles();
+      d.trackball = model.view.trackball();
+      d.zoom = model.view.zoom();
+    };
+    model.session.restore_view = [&model](const DocumentState& d) { model.view.set(d.angles, d.trackball, d.zoom); };
     model.session_options.device = options.device.empty() ? "mouse" : options.device;
     Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
     if (!model.error.empty() && !options.open_spec.empty()) {

@@ -136,6 +136,7 @@ void Panels::draw(GuiModel& model, float fps) {
   simulation_panel(model);
   scenario_banner(model);
   ribbon_panel(model);
+  history_panel(model);
   generator_dialog(model);
   dialogs(model);
 }
@@ -162,6 +163,15 @@ void Panels::menu_bar(GuiModel& model) {
                         "shadow4d knot sketch FILE --knot --out KNOT");
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) model.quit = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    const History& h = model.session.history();
+    const std::string undo = h.can_undo() ? "Undo " + h.done_labels().back() : "Undo";
+    const std::string redo = h.can_redo() ? "Redo " + h.undone_labels().front() : "Redo";
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.can_undo())) model.session.undo();
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.can_redo())) model.session.redo();
+    ImGui::MenuItem("History", nullptr, &model.show_history);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Tools")) {
@@ -227,9 +237,22 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::TextUnformatted("4D rotation (degrees)");
   auto& angles = model.view.plane_angles();
   const auto planes = all_planes(4);
-  for (std::size_t i = 0; i < planes.size(); ++i)
+  const auto angles_before = angles;
+  // A turn is one undoable step, recorded with the angles it started from.
+  auto record_turn = [&](const std::string& label) {
+    const auto now = angles;
+    angles = angles_before;
+    model.session.record(label);
+    angles = now;
+  };
+  for (std::size_t i = 0; i < planes.size(); ++i) {
     ImGui::SliderFloat(plane_name(planes[i]).c_str(), &angles[i], -180.0f, 180.0f, "%.0f");
-  if (ImGui::Button("Reset 4D rotation")) angles.fill(0.0f);
+    if (ImGui::IsItemActivated()) record_turn("turn " + plane_name(planes[i]));
+  }
+  if (ImGui::Button("Reset 4D rotation")) {
+    model.session.record("reset the 4D rotation");
+    angles.fill(0.0f);
+  }
   ImGui::SameLine();
   if (ImGui::Button("Reset view")) model.view.reset(model.scene());
   ImGui::TextDisabled("drag empty space: turn  shift-drag: xw/yw  ctrl-drag: zw  wheel: zoom");
@@ -296,6 +319,7 @@ void Panels::scene_panel(GuiModel& model) {
     ImGui::PopID();
   }
   if (remove >= 0) {
+    model.session.record("delete " + scene.objects[static_cast<std::size_t>(remove)].name);
     scene.objects.erase(scene.objects.begin() + remove);
     model.session.rebuild();  // the simulation restarts from the objects as they are
   }
@@ -339,7 +363,10 @@ void Panels::simulation_panel(GuiModel& model) {
   ImGui::SameLine();
   if (ImGui::Button("Step")) session.send(live_command(LiveCode::kStepOnce));
   ImGui::SameLine();
-  if (ImGui::Button("Reset")) session.send(live_command(LiveCode::kReset));
+  if (ImGui::Button("Reset")) {
+    session.record("reset the simulation");
+    session.send(live_command(LiveCode::kReset));
+  }
   if (session.scenario()) {
     ImGui::SameLine();
     if (!st.script_running) {
@@ -356,14 +383,24 @@ void Panels::simulation_panel(GuiModel& model) {
   ImGui::Separator();
   ImGui::TextUnformatted("Physics (applied live)");
   PhysicsSettings& p = model.scene().physics;
+  const PhysicsSettings before = p;
   bool changed = false, released = false;
+  // One change of a setting (a whole slider drag) is one undoable step, with the value before it.
+  auto record_setting = [&] {
+    const PhysicsSettings now = p;
+    p = before;
+    session.record("change the physics");
+    p = now;
+  };
   auto edited = [&] {
+    if (ImGui::IsItemActivated()) record_setting();
     changed = changed || ImGui::IsItemEdited();
     released = released || ImGui::IsItemDeactivatedAfterEdit();
   };
   bool gravity_on = p.gravity.norm() > 0;
   static Vec4 gravity_saved(0, -9.81, 0, 0);
   if (ImGui::Checkbox("gravity", &gravity_on)) {
+    record_setting();
     if (gravity_on) p.gravity = gravity_saved;
     else {
       gravity_saved = p.gravity;
@@ -392,6 +429,7 @@ void Panels::simulation_panel(GuiModel& model) {
   slider("damping N s/m", p.damping, 0.0, 1.0, "%.3f", false);
   int integrator = p.integrator == "paper-euler" || p.integrator == "explicit-euler" ? 1 : 0;
   if (ImGui::Combo("integrator", &integrator, kIntegratorNames, 2)) {
+    record_setting();
     p.integrator = kIntegratorNames[integrator];
     released = true;
   }
@@ -416,7 +454,10 @@ void Panels::simulation_panel(GuiModel& model) {
   }
   ImGui::Text("pins: %d", st.pinned);
   ImGui::SameLine();
-  if (ImGui::SmallButton("clear pins")) session.send(live_command(LiveCode::kClearPins));
+  if (ImGui::SmallButton("clear pins")) {
+    session.record("clear the pins");
+    session.send(live_command(LiveCode::kClearPins));
+  }
   if (st.held_vertex >= 0)
     ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex, st.grab_mode == 1 ? "(along w)" : "", st.band_force);
 
@@ -485,6 +526,28 @@ void Panels::ribbon_panel(GuiModel& model) {
   ImGui::End();
 }
 
+// Every step done (oldest first) and undone (greyed, next to redo first); the buttons walk it.
+void Panels::history_panel(GuiModel& model) {
+  if (!model.show_history) return;
+  ImGui::SetNextWindowSize(ImVec2(300, 300), ImGuiCond_FirstUseEver);
+  ImGui::Begin("History", &model.show_history);
+  Session& s = model.session;
+  const History& h = s.history();
+  if (ImGui::Button("Undo")) s.undo();
+  ImGui::SameLine();
+  if (ImGui::Button("Redo")) s.redo();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu step(s), %.1f MB", h.done_labels().size() + h.undone_labels().size(),
+                      static_cast<double>(h.bytes()) / (1 << 20));
+  ImGui::Separator();
+  const auto done = h.done_labels();
+  for (std::size_t i = 0; i < done.size(); ++i) ImGui::Text("%zu  %s", i + 1, done[i].c_str());
+  for (const std::string& l : h.undone_labels()) ImGui::TextDisabled("    %s (undone)", l.c_str());
+  if (done.empty() && !h.can_redo()) ImGui::TextDisabled("nothing done yet");
+  ImGui::TextDisabled("the last %zu steps or %zu MB are kept", History::kMaxSteps, History::kMaxBytes >> 20);
+  ImGui::End();
+}
+
 // [SECTION] Generator dialog
 void Panels::generator_dialog(GuiModel& model) {
   if (!generator_dialog_open_) return;
@@ -526,6 +589,7 @@ void Panels::generator_dialog(GuiModel& model) {
         open(model, std::move(d));
         if (info->dim == 4) model.view.turn_to_generic_view();
       } else {
+        model.session.record("create " + obj.name);
         model.scene().objects.push_back(std::move(obj));
         model.session.rebuild();  // the simulation restarts from the objects as they are
       }

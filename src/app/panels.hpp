@@ -45,6 +45,7 @@ struct GuiModel {
   bool want_screenshot = false;
   std::string screenshot_path = "shadow4d-screenshot.png";
   bool open_haptics = false;   // show the haptics panel
+  bool show_history = false;   // Edit > History
   // [tools]
   ToolChoice tool = ToolChoice::kTouch;
   GrabTool grab;
@@ -94,6 +95,7 @@ class Panels {
   void simulation_panel(GuiModel& model);
   void scenario_banner(GuiModel& model);
   void ribbon_panel(GuiModel& model);
+  void history_panel(GuiModel& model);
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);

@@ -35,6 +35,14 @@ class ViewState {
   // Writes the composed 4D frame, trackball and zoom into the scene for drawing.
   void apply_to(Scene& scene) const;
   Frame<4> composed_frame() const;
+  // For undo: the trackball and the zoom as they are, and put back.
+  const Eigen::Quaterniond& trackball() const { return trackball_; }
+  double zoom() const { return zoom_; }
+  void set(const std::array<float, 6>& angles, const Eigen::Quaterniond& trackball, double zoom) {
+    angles_ = angles;
+    trackball_ = trackball;
+    zoom_ = zoom;
+  }
 
  private:
   Frame<4> base_frame_;

@@ -39,6 +39,7 @@ bool GrabTool::press(const ToolInput& in, Session& s) {
   plane_point_ = h.point;
   hand_ = h.point;
   s.set_hand(hand_, true);
+  s.record("drag vertex " + std::to_string(v) + (along_w_ ? " along w" : ""));
   s.send(live_grab(v, along_w_ ? 1 : 0, hand_));
   holding_ = true;
   message_ = "holding vertex " + std::to_string(v) + (along_w_ ? " (along w)" : "");
@@ -76,6 +77,7 @@ void GrabTool::toggle_pin_under_cursor(Session& s) {
   const int v = world_vertex(hits_[static_cast<std::size_t>(sheet_)], s);
   if (v < 0) return;
   const bool was = s.pinned(v);
+  s.record((was ? "unpin vertex " : "pin vertex ") + std::to_string(v));
   s.send(live_command(LiveCode::kTogglePin, v));
   message_ = (was ? "unpinned vertex " : "pinned vertex ") + std::to_string(v);
 }
@@ -104,7 +106,10 @@ bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
     if (holding_ && s.snapshot()) {  // pin the held vertex where it is and let go
       const int v = s.snapshot()->status.held_vertex;
       release(in, s);
-      if (v >= 0) s.send(live_command(LiveCode::kPin, v));
+      if (v >= 0) {
+        s.record("pin vertex " + std::to_string(v));
+        s.send(live_command(LiveCode::kPin, v));
+      }
       message_ = "pinned vertex " + std::to_string(v);
     } else {
       hover(in, s);

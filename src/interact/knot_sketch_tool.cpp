@@ -92,6 +92,7 @@ void KnotSketchTool::release(const ToolInput& in, Session& s) {
   int n = 1;
   for (const SceneObject& o : s.scene().objects) n += o.name.rfind("sketch-", 0) == 0;
   obj.name = "sketch-" + std::to_string(n);
+  s.record("sketch a knot");
   s.scene().objects.push_back(std::move(obj));
   s.scene().view.intersections = true;  // its crossings and Gauss code
   message_ = "sketched " + s.scene().objects.back().name + "; " + help();

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "haptics/spsc_queue.hpp"
 #include "haptics/triple_buffer.hpp"
+#include "interact/handover.hpp"
 #include "interact/surface_explorer.hpp"
 #include "scenario/script_driver.hpp"
 #include "scenario/world_builder.hpp"
@@ -228,6 +229,37 @@ class Core {
     }
   }
 
+  // The World put in `s` (an undo, a restored session), paused there.
+  void set_state(const WorldState& s) {
+    World<D>& w = world_.world;
+    const std::size_t n = static_cast<std::size_t>(w.vertex_count());
+    if (s.positions.size() != n * D || (!s.velocities.empty() && s.velocities.size() != n * D)) {
+      set_message(status_, "a state of another size was refused (" + std::to_string(s.positions.size() / D) +
+                               " vertices for " + std::to_string(n) + ")");
+      return;
+    }
+    std::vector<Vec<D>> x(n), v(n, Vec<D>::Zero());
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < D; ++k) {
+        x[i][k] = s.positions[i * D + static_cast<std::size_t>(k)];
+        if (!s.velocities.empty()) v[i][k] = s.velocities[i * D + static_cast<std::size_t>(k)];
+      }
+    try {
+      w.set_state(x, v);
+    } catch (const std::exception& e) {
+      set_message(status_, e.what());
+      return;
+    }
+    for (int i = 0; i < w.vertex_count(); ++i) w.unpin(i);
+    for (int p : s.pinned)
+      if (p >= 0 && p < w.vertex_count()) w.pin(p);
+    if (script_) script_->release(w);
+    script_.reset();
+    hand_ = Hand<D>{};
+    owed_ = 0;
+    playing_ = false;
+  }
+
   // Adds dt of haptic time (s) to what the simulation owes; at most 0.1 s is owed (beyond it
   // the simulation runs in slow motion rather than racing to catch up).
   void owe(double dt) {
@@ -335,6 +367,7 @@ class PhysicsThread {
     if (!commands_.try_push(c)) dropped_.fetch_add(1, std::memory_order_relaxed);
   }
   void set_hand(const Hand<D>& h) { hand_.write(h); }
+  void offer_state(std::unique_ptr<WorldState> s) { states_.offer(std::move(s)); }
   void advance_clock(double dt) { clock_ns_.fetch_add(static_cast<std::uint64_t>(std::llround(dt * 1e9)), std::memory_order_release); }
   const LiveState<D>& state() { return state_.read(); }
 
@@ -350,6 +383,11 @@ class PhysicsThread {
       bool changed = false;
       while (auto c = commands_.try_pop()) {
         core_->command(*c);
+        changed = true;
+      }
+      if (WorldState* st = states_.take()) {
+        core_->set_state(*st);
+        states_.retire(st);
         changed = true;
       }
       core_->set_hand(hand_.read());
@@ -368,6 +406,7 @@ class PhysicsThread {
 
   std::unique_ptr<Core<D>> core_;
   SpscQueue<SceneCommand, 64> commands_;
+  Handover<WorldState> states_;
   TripleBuffer<Hand<D>> hand_;
   TripleBuffer<LiveState<D>> state_;
   std::atomic<std::uint64_t> clock_ns_{0};
@@ -403,16 +442,18 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
     params_[kExploreDamping] = {"explore B", 1.0, 0, 10, "N s/m at the device"};
     if constexpr (D == 4) explorer_ = std::make_unique<SurfaceExplorer>(triangles_, nv_);
   }
-  ~LiveSimulation() override {
-    delete offered_.exchange(nullptr);
-    delete retired_.exchange(nullptr);
-  }
+
 
   std::span<const Triangle> triangles() const override { return triangles_; }
   void offer_crossings(std::unique_ptr<CrossingTable> table) override {
-    if (!explorer_ || !table) return;
-    delete retired_.exchange(nullptr, std::memory_order_acq_rel);
-    delete offered_.exchange(table.release(), std::memory_order_acq_rel);
+    if (explorer_ && table) crossings_.offer(std::move(table));
+  }
+  void offer_state(std::unique_ptr<WorldState> state) override {
+    if (!state) return;
+    held_ = -1;
+    exploring_ = false;
+    if (thread_) thread_->offer_state(std::move(state));
+    else states_.offer(std::move(state));
   }
 
   std::string_view name() const override { return "live-simulation"; }
@@ -483,6 +524,12 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
     device_ = device;
     const bool button = device.buttons & 1u;
     if (thread_) current_ = &thread_->state();  // one consistent state for the whole tick
+    if (core_) {
+      if (WorldState* st = states_.take()) {
+        core_->set_state(*st);
+        states_.retire(st);
+      }
+    }
     if (button && !button_ && held_ < 0 && !exploring_) {
       // A device's button grabs the vertex nearest its point in the shadow (the mouse path sends
       // kGrab with the vertex under the cursor instead).
@@ -599,11 +646,9 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
   // spring, each pass of a shadow curve becomes an event for the sound cues.
   void explore(const DeviceState& device, double dt, ToolOutput& out) {
     if (!explorer_) return;
-    if (retired_.load(std::memory_order_acquire) == nullptr) {
-      if (CrossingTable* t = offered_.exchange(nullptr, std::memory_order_acq_rel)) {
-        explorer_->swap_crossings(*t);  // the old table goes back to the UI for freeing
-        retired_.store(t, std::memory_order_release);
-      }
+    if (CrossingTable* t = crossings_.take()) {
+      explorer_->swap_crossings(*t);  // the old table goes back to the UI for freeing
+      crossings_.retire(t);
     }
     explore_time_ += dt;
     const double mpu = mapping_.metres_per_unit;
@@ -693,8 +738,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
 
   std::vector<Triangle> triangles_;                // the world's, fixed
   std::unique_ptr<SurfaceExplorer> explorer_;      // R^4 only
-  std::atomic<CrossingTable*> offered_{nullptr};   // from the UI, taken by the tick
-  std::atomic<CrossingTable*> retired_{nullptr};   // given back by the tick, freed by the UI
+  Handover<CrossingTable> crossings_;            // from the UI, taken by the tick
+  Handover<WorldState> states_;                  // inline: from the UI, applied by the tick
   bool exploring_ = false;
   double explore_time_ = 0;
   Vec3 probe_ = Vec3::Zero();

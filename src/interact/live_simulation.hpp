@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <vector>
 #include <string>
 
 #include "haptics/haptic_scene.hpp"
@@ -69,6 +70,13 @@ enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kExpl
 
 struct CrossingTable;
 
+// A state to put the World in at once (an undo, a restored session): every vertex's position
+// and velocity (nv × D each, body order) and the pinned vertices. The simulation pauses there.
+struct WorldState {
+  std::vector<double> positions, velocities;
+  std::vector<int> pinned;
+};
+
 // What the UI hands a running live simulation directly (thread-safe, never blocking either side).
 class LiveHandover {
  public:
@@ -79,6 +87,9 @@ class LiveHandover {
   // build_crossing_table on a recent state and the current frame); the latest offer wins, the
   // tick installs it without allocating. No-op for a world of R^3.
   virtual void offer_crossings(std::unique_ptr<CrossingTable> table) = 0;
+  // Puts the World in `state` at the next step and pauses it (a state of the wrong size or with a
+  // non-finite value is refused, with the reason in the status message).
+  virtual void offer_state(std::unique_ptr<WorldState> state) = 0;
 };
 
 // Builds the World of the scene's surfaces (scenario/world_builder). `scenario`, when given,

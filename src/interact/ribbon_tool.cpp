@@ -50,6 +50,7 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
   try {
     const SketchObstacles obstacles = sketch_obstacles(s.scene());
     const SketchedRibbon r = ribbon_from_sketch(stroke, obstacles.surfaces, s.scene().frame, toward_eye, o, obstacles.names);
+    s.record("sketch a ribbon");
     const std::string name = add_sketched_ribbon(s.scene(), r);
     last_ = r;
     made_ = true;

@@ -50,6 +50,7 @@ void Session::close() {
 
 void Session::open(Document doc, const SessionOptions& options) {
   close();
+  history_.clear();
   doc_ = std::move(doc);
   options_ = options;
   start();
@@ -193,6 +194,66 @@ std::vector<SceneEvent> Session::take_events() {
   }
   for (; events_seen_ < st.event_count; ++events_seen_) out.push_back(st.events[events_seen_ % ring]);
   return out;
+}
+
+DocumentState Session::capture() const {
+  DocumentState d;
+  d.scene = doc_.scene;
+  if (snapshot_)
+    for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
+      if (snapshot_->flags[v] & 1) d.pinned.push_back(static_cast<int>(v));
+  if (capture_view) capture_view(d);
+  return d;
+}
+
+void Session::record(const std::string& label) { history_.record(label, capture()); }
+
+bool Session::undo() {
+  auto s = history_.undo(capture());
+  if (!s) return false;
+  restore(std::move(*s));
+  return true;
+}
+
+bool Session::redo() {
+  auto s = history_.redo(capture());
+  if (!s) return false;
+  restore(std::move(*s));
+  return true;
+}
+
+// The same bodies (object count, kinds, vertex counts): the running World is put in the state;
+// otherwise (objects were created or deleted) the simulation restarts from the state's scene.
+void Session::restore(DocumentState state) {
+  std::vector<int> first, count;
+  body_vertex_ranges(state.scene, first, count);
+  const bool same_bodies = simulating() && first == first_ && count == count_ &&
+                           state.scene.objects.size() == doc_.scene.objects.size() &&
+                           simulation_dimension(state.scene) == dim_;
+  const bool physics_changed = !(state.scene.physics == doc_.scene.physics);
+  doc_.scene = std::move(state.scene);
+  if (!same_bodies) {
+    rebuild();
+    if (loop_) send(live_command(LiveCode::kPause));
+  } else if (physics_changed) {
+    send(live_settings(doc_.scene.physics));
+  }
+  if (handover_) {
+    auto w = std::make_unique<WorldState>();
+    for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
+      if (first_[o] < 0) continue;
+      std::visit([&](const auto& sh) {
+        using T = std::decay_t<decltype(sh)>;
+        if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+          for (const auto& p : sh.vertices)
+            for (int k = 0; k < dim_; ++k) w->positions.push_back(k < T::kDim ? p[k] : 0.0);
+        }
+      }, doc_.scene.objects[o].shape);
+    }
+    w->pinned = state.pinned;
+    handover_->offer_state(std::move(w));
+  }
+  if (restore_view) restore_view(state);
 }
 
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }

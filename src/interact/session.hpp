@@ -4,11 +4,13 @@
 // the World; they meet only in SceneCommands and snapshots (see DESIGN.md "Interaction").
 #pragma once
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "haptics/haptic_loop.hpp"
+#include "interact/history.hpp"
 #include "interact/live_simulation.hpp"
 #include "interact/session_monitor.hpp"
 #include "io/scene.hpp"
@@ -80,6 +82,19 @@ class Session {
   void set_device(const std::string& spec);
   const std::string& device_spec() const { return options_.device; }
 
+  // [undo] Every user action is one step: a tool calls record() just before it acts (one drag is
+  // one step). undo()/redo() put the document, the pins and the view back; a running simulation
+  // pauses at the restored state. False when there is nothing to undo / redo.
+  void record(const std::string& label);
+  bool undo();
+  bool redo();
+  const History& history() const { return history_; }
+  // The document as it is now (shapes from the last refresh, pins from the snapshot).
+  DocumentState capture() const;
+  // The window's part of a state: its 4D rotation, trackball and zoom.
+  std::function<void(DocumentState&)> capture_view;
+  std::function<void(const DocumentState&)> restore_view;
+
   // The device's workspace laid onto the view (sent to the simulation; the window refits it
   // when the view turns). Kept while a vertex is held, so the hand does not jump.
   void set_mapping(const DeviceMapping& mapping);
@@ -103,6 +118,7 @@ class Session {
 
  private:
   void start();
+  void restore(DocumentState state);
 
   Document doc_;
   SessionOptions options_;
@@ -118,6 +134,7 @@ class Session {
   std::int64_t rate_steps_ = 0;
   std::chrono::steady_clock::time_point last_submit_;
   DeviceMapping mapping_;
+  History history_;
   LiveHandover* handover_ = nullptr;  // the live simulation, owned by the loop
   std::uint64_t events_seen_ = 0, lost_events_ = 0;
   std::chrono::steady_clock::time_point last_crossings_{};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "interact/session.hpp"
 
 namespace s4d {
 
@@ -111,7 +112,8 @@ Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const Sc
   throw Error("changing this crossing from this view would change others: turn the view a little");
 }
 
-bool change_crossing_under(const ToolView& view, Scene& scene, std::string& message) {
+bool change_crossing_under(const ToolView& view, Session& session, std::string& message) {
+  Scene& scene = session.scene();
   const Camera& camera = view.camera;
   const ScreenCrossing* best = nullptr;
   double best_px = 14;  // pixels: about a dot's size
@@ -126,8 +128,10 @@ bool change_crossing_under(const ToolView& view, Scene& scene, std::string& mess
   }
   if (!best) return false;
   try {
+    Shape changed = change_crossing_in_view(scene, camera, *best, 2.5 * scene.view.tube_radius);
+    session.record("change a crossing");
     SceneObject& obj = scene.objects[static_cast<std::size_t>(best->object)];
-    obj.shape = change_crossing_in_view(scene, camera, *best, 2.5 * scene.view.tube_radius);
+    obj.shape = std::move(changed);
     obj.generator.reset();  // edited geometry: saved as a file beside the scene
     obj.source_path.clear();
     message = "changed a crossing of '" + obj.name + "'";

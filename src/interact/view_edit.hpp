@@ -8,6 +8,8 @@
 
 namespace s4d {
 
+class Session;
+
 // The shape of crossing c's curve object (c from screen_crossings(scene, camera)) with that
 // crossing changed: the under strand's vertices near it move along their own lines of sight
 // towards the eye until it passes `clearance` in front of the over strand. Every vertex keeps its
@@ -21,6 +23,7 @@ Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const Sc
 // The crossing change of the window's right click: the crossing whose dot lies within 14 pixels
 // of the cursor, changed in scene's curve; false when no dot is there. What happened (or why it
 // could not) is left in `message`.
-bool change_crossing_under(const ToolView& view, Scene& scene, std::string& message);
+// The change is one undoable step of the session.
+bool change_crossing_under(const ToolView& view, Session& session, std::string& message);
 
 }  // namespace s4d

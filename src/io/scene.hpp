@@ -97,6 +97,7 @@ struct PhysicsSettings {
   double max_step_motion = 0;  // m per step, 0 = δ (the paper's clamp of a frame's motion)
   bool collisions = true;      // self- and mutual collision avoidance
   std::string integrator = "symplectic-euler";
+  friend bool operator==(const PhysicsSettings&, const PhysicsSettings&) = default;
 };
 
 struct Scene {

@@ -201,3 +201,41 @@ TEST(GuiSmoke, ARibbonSketchedThroughASphereIsThreaded) {
 
 }  // namespace
 }  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// Ctrl+Z after a drag puts the pulled vertex back where it was, paused; Ctrl+Shift+Z pulls it
+// out again.
+TEST(GuiSmoke, CtrlZUndoesADragAndCtrlShiftZRedoesIt) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_undo";
+  std::vector<std::string> l{"3 key SPACE", "10 move 640 400", "20 move 641 400",
+                             "30 dump " + (dir / "before.json").string(), "31 press left"};
+  for (int i = 1; i <= 30; ++i) l.push_back(std::to_string(31 + 2 * i) + " move " + std::to_string(641 + 4 * i) + " " + std::to_string(400 - i));
+  l.push_back("95 dump " + (dir / "during.json").string());
+  l.push_back("96 release left");
+  l.push_back("100 key-down LEFT_CONTROL");
+  l.push_back("101 key Z");
+  l.push_back("102 key-up LEFT_CONTROL");
+  l.push_back("110 dump " + (dir / "undone.json").string());
+  l.push_back("111 key-down LEFT_CONTROL");
+  l.push_back("111 key-down LEFT_SHIFT");
+  l.push_back("112 key Z");
+  l.push_back("113 key-up LEFT_SHIFT");
+  l.push_back("113 key-up LEFT_CONTROL");
+  const auto after = run_script(std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json", l, dir);
+  const auto before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
+  const auto during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
+  const auto undone = nlohmann::json::parse(std::ifstream(dir / "undone.json"));
+  const int held = during["held_vertex"].get<int>();
+  ASSERT_GE(held, 0);
+  EXPECT_GT((vertex(during, held) - vertex(before, held)).norm(), 0.15);
+  EXPECT_LT((vertex(undone, held) - vertex(before, held)).norm(), 0.02) << undone["status"];
+  EXPECT_FALSE(undone["playing"].get<bool>()) << "paused at the restored state";
+  EXPECT_GT((vertex(after, held) - vertex(before, held)).norm(), 0.15) << "redone: " << after["status"];
+}
+
+}  // namespace
+}  // namespace s4d

@@ -1,0 +1,126 @@
+// Undo and redo on a headless Session: a drag, a pin, a created object and a physics change
+// each come back as one step; the running simulation pauses at the restored state.
+#include <gtest/gtest.h>
+
+#include "interact/grab_tool.hpp"
+#include "interact/session.hpp"
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+Document cloth() {
+  Document d;
+  SceneObject o;
+  o.name = "cloth";
+  o.shape = generate("cloth", {{"n", 8}, {"size", 1}});
+  d.scene.objects.push_back(o);
+  d.scene.physics.stiffness = 200;
+  return d;
+}
+
+std::vector<double> points(Session& s) {
+  s.loop()->run_ticks(1);
+  s.refresh();
+  return s.snapshot()->points;
+}
+
+TEST(SessionUndo, ADragIsOneStepAndUndoPutsTheWorldBackPaused) {
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  s.open(cloth(), o);
+  ASSERT_TRUE(s.simulating());
+  s.set_mapping(DeviceMapping::fit(Vec3::Zero(), 1, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
+  const std::vector<double> before = points(s);
+
+  GrabTool tool;
+  ToolInput in;
+  in.view.eye = Vec3(0.07, 0.07, 5);
+  in.view.ray = Vec3(0, 0, -1);
+  ASSERT_TRUE(tool.press(in, s));
+  for (int i = 1; i <= 50; ++i) {
+    in.view.eye = Vec3(0.07, 0.07 + 0.006 * i, 5);
+    tool.drag(in, s);
+    s.loop()->run_ticks(10);
+  }
+  tool.release(in, s);
+  const std::vector<double> dragged = points(s);
+  EXPECT_NE(dragged, before);
+  ASSERT_EQ(s.history().done_labels().size(), 1u) << "a 500-tick drag is one step";
+  EXPECT_EQ(s.history().done_labels()[0].rfind("drag vertex", 0), 0u);
+
+  ASSERT_TRUE(s.undo());
+  s.loop()->run_ticks(5);
+  s.refresh();
+  EXPECT_FALSE(s.snapshot()->status.playing) << "paused at the restored state";
+  const std::vector<double> undone = s.snapshot()->points;
+  ASSERT_EQ(undone.size(), before.size());
+  for (std::size_t i = 0; i < undone.size(); ++i) ASSERT_NEAR(undone[i], before[i], 1e-12) << i;
+  ASSERT_TRUE(s.redo());
+  const std::vector<double> redone = points(s);
+  double moved = 0;
+  for (std::size_t i = 0; i < redone.size(); ++i) moved = std::max(moved, std::abs(redone[i] - dragged[i]));
+  EXPECT_LT(moved, 1e-9) << "redo puts the dragged state back";
+  EXPECT_FALSE(s.redo());
+}
+
+TEST(SessionUndo, PinsObjectsAndSettingsComeBack) {
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  s.open(cloth(), o);
+  points(s);
+  s.record("pin vertex 3");
+  s.send(live_command(LiveCode::kPin, 3));
+  points(s);
+  EXPECT_EQ(s.snapshot()->status.pinned, 1);
+  ASSERT_TRUE(s.undo());
+  points(s);
+  EXPECT_EQ(s.snapshot()->status.pinned, 0);
+  ASSERT_TRUE(s.redo());
+  points(s);
+  EXPECT_EQ(s.snapshot()->status.pinned, 1);
+
+  // A created object: undo removes it and the simulation restarts without it.
+  s.record("create sphere");
+  SceneObject sphere;
+  sphere.name = "sphere";
+  Surface<4> sp = std::get<Surface<4>>(generate("sphere", {{"n", 6}, {"radius", 0.3}}));
+  for (Vec4& p : sp.vertices) p.z() += 2;
+  sphere.shape = sp;
+  s.scene().objects.push_back(sphere);
+  s.rebuild();
+  const std::size_t with = points(s).size();
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.scene().objects.size(), 1u);
+  EXPECT_LT(points(s).size(), with);
+  EXPECT_EQ(s.snapshot()->status.pinned, 1) << "the pins of that state come back with it";
+
+  // A physics change.
+  s.record("change the physics");
+  s.scene().physics.friction = 0;
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(s.scene().physics.friction, 0.3);
+}
+
+TEST(SessionUndo, TheViewComesBackThroughTheWindowsHooks) {
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  s.open(cloth(), o);
+  std::array<float, 6> angles{};
+  s.capture_view = [&](DocumentState& d) { d.angles = angles; };
+  s.restore_view = [&](const DocumentState& d) { angles = d.angles; };
+  s.record("turn xw");
+  angles[2] = 45;
+  ASSERT_TRUE(s.undo());
+  EXPECT_EQ(angles[2], 0);
+  ASSERT_TRUE(s.redo());
+  EXPECT_EQ(angles[2], 45);
+}
+
+}  // namespace
+}  // namespace s4d
