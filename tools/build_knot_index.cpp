@@ -1,7 +1,10 @@
 // Builds data/knots/knot_index.tsv: every prime knot of Regina's census (up to 14 crossings) with
-// the fingerprint of its HOMFLY-PT polynomial, and Rolfsen names (up to 10 crossings) matched from
-// the braid table data/knots/rolfsen_braids.txt.
+// the fingerprint of its HOMFLY-PT polynomial, a signature of its minimal diagram, Rolfsen names
+// (up to 10 crossings) matched from the braid table data/knots/rolfsen_braids.txt, and, when a
+// table of DT codes is given, Dowker-Thistlethwaite names for the knots the census leaves unnamed
+// (13 and 14 crossings).
 //   build_knot_index --census knot-census.rga --rolfsen rolfsen_braids.txt --out knot_index.tsv
+//   build_knot_index ... --dt-names FILE   (lines "13n_5018  <numerical DT code>"; '#' comments)
 //   build_knot_index ... --check   (exit 1 if the existing --out file differs)
 #include <link/link.h>
 #include <packet/packet.h>
@@ -69,7 +72,7 @@ int find_by_rewriting(const regina::Link& from, const std::vector<std::string>& 
 }
 
 struct Args {
-  std::string census, rolfsen, out;
+  std::string census, rolfsen, out, dt_names;
   bool check = false;
 };
 
@@ -84,11 +87,13 @@ Args parse_args(int argc, char** argv) {
     if (s == "--census") a.census = value();
     else if (s == "--rolfsen") a.rolfsen = value();
     else if (s == "--out") a.out = value();
+    else if (s == "--dt-names") a.dt_names = value();
     else if (s == "--check") a.check = true;
     else throw std::runtime_error("unknown argument " + s);
   }
   if (a.census.empty() || a.rolfsen.empty() || a.out.empty())
-    throw std::runtime_error("usage: build_knot_index --census FILE --rolfsen FILE --out FILE [--check]");
+    throw std::runtime_error(
+        "usage: build_knot_index --census FILE --rolfsen FILE --out FILE [--dt-names FILE] [--check]");
   return a;
 }
 
@@ -110,6 +115,8 @@ int main(int argc, char** argv) try {
     const regina::Link& link = *held;
     KnotTableEntry e;
     std::tie(e.regina_name, e.dt_name) = split_label(packet.label());
+    // The census pads DT numbers ("12a_0803"); KnotInfo and the Knot Atlas write "12a_803".
+    if (!e.dt_name.empty()) e.dt_name = canonical_knot_name(e.dt_name);
     e.crossings = static_cast<int>(link.size());
     const Laurent2 h = homfly_of(link);
     const Laurent2 hm = h.mirror_alpha();
@@ -173,6 +180,65 @@ int main(int argc, char** argv) try {
     ++named;
   }
 
+  // [2b] DT names from a table of DT codes, for census knots that have none (13 and 14 crossings):
+  // the same HOMFLY-PT matching as for Rolfsen names, Reidemeister rewriting to break ties.
+  int dt_named = 0, dt_unresolved = 0;
+  if (!args.dt_names.empty()) {
+    std::ifstream in(args.dt_names);
+    if (!in) throw std::runtime_error("cannot read " + args.dt_names);
+    std::string line;
+    int line_no = 0;
+    while (std::getline(in, line)) {
+      ++line_no;
+      if (line.empty() || line[0] == '#') continue;
+      for (char& ch : line)
+        if (ch == ',' || ch == '[' || ch == ']' || ch == '(' || ch == ')') ch = ' ';
+      std::istringstream fields(line);
+      std::string name, code, v;
+      fields >> name;
+      while (fields >> v) code += (code.empty() ? "" : " ") + v;
+      name = canonical_knot_name(name);
+      regina::Link link;
+      try {
+        link = regina::Link::fromDT(code);
+      } catch (const std::exception& ex) {
+        throw std::runtime_error(args.dt_names + ":" + std::to_string(line_no) + ": bad DT code (" +
+                                 ex.what() + ")");
+      }
+      const int n = static_cast<int>(link.size());
+      const std::uint64_t fp = homfly_fingerprint(homfly_of(link));
+      std::vector<KnotTableEntry*> free_hits;
+      for (auto& e : entries)
+        if (e.crossings == n && e.dt_name.empty() && (e.key == fp || e.mirror_key == fp))
+          free_hits.push_back(&e);
+      if (free_hits.size() > 1) {
+        std::vector<std::string> sigs;
+        for (auto* e : free_hits) sigs.push_back(census_links[e - entries.data()].knotSig());
+        const int i = find_by_rewriting(link, sigs, 2);
+        if (i >= 0) free_hits = {free_hits[i]};
+      }
+      if (free_hits.size() != 1) {
+        ++dt_unresolved;
+        std::cerr << "build_knot_index: " << name << " matches " << free_hits.size()
+                  << " unnamed census knots\n";
+        continue;
+      }
+      free_hits.front()->dt_name = name;
+      ++dt_named;
+    }
+    std::cerr << "build_knot_index: " << dt_named << " DT names from " << args.dt_names << ", "
+              << dt_unresolved << " unresolved\n";
+  }
+
+  // Signatures of each census diagram in the reference chirality (reflected where the Rolfsen
+  // table's diagram is the census diagram's mirror image), so the table can draw every knot.
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    regina::Link l = census_links[i];
+    const std::uint64_t k = homfly_fingerprint(homfly_of(l));
+    if (k != entries[i].key) l.reflect();
+    entries[i].sig = l.knotSig(false, false);
+  }
+
   // [3] Amphichirality: for HOMFLY-symmetric knots up to kFactorCrossings, look for the mirror
   // diagram among the diagrams reachable by Reidemeister moves (signatures that see reflection).
   int amphichiral = 0;
@@ -210,8 +276,9 @@ int main(int argc, char** argv) try {
          "# key = HOMFLY-PT(alpha, z) at a fixed point mod 2^61-1 (src/knots/polynomial.hpp), hex;\n"
          "# mirror_key likewise for the mirror image (0 above "
       << KnotIndex::kFactorCrossings
-      << " crossings); flags: s = HOMFLY-PT symmetric, A = proven amphichiral, a = alternating.\n"
-         "# key\tmirror_key\tcrossings\tregina\tdt\trolfsen\tflags\n";
+      << " crossings); flags: s = HOMFLY-PT symmetric, A = proven amphichiral, a = alternating;\n"
+         "# sig = Regina knot signature of a minimal diagram in the chirality of key.\n"
+         "# key\tmirror_key\tcrossings\tregina\tdt\trolfsen\tflags\tsig\n";
   for (const auto& e : entries) out << format_index_line(e) << "\n";
 
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

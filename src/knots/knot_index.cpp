@@ -1,6 +1,7 @@
 // Loading and querying the knot index file.
 #include "knots/knot_index.hpp"
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
@@ -23,7 +24,30 @@ std::string format_index_line(const KnotTableEntry& e) {
       << field(e.regina_name) << '\t' << field(e.dt_name) << '\t' << field(e.rolfsen_name) << '\t'
       << (e.homfly_symmetric ? "s" : "") << (e.amphichiral ? "A" : "")
       << (e.alternating ? "a" : "") << (!e.homfly_symmetric && !e.alternating ? "-" : "");
+  if (!e.sig.empty()) out << '\t' << e.sig;
   return out.str();
+}
+
+std::string canonical_knot_name(const std::string& name) {
+  const auto first = name.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  std::string s = name.substr(first, name.find_last_not_of(" \t") - first + 1);
+  std::string t = s;
+  if (t.size() > 1 && (t[0] == 'K' || t[0] == 'k') && std::isdigit(static_cast<unsigned char>(t[1])))
+    t.erase(0, 1);
+  // crossings, then letters (a/n, and Regina's h/t/s), then an optional '_', then the number
+  std::size_t i = 0;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i;
+  const std::size_t letters = i;
+  while (i < t.size() && std::isalpha(static_cast<unsigned char>(t[i]))) ++i;
+  if (letters == 0 || i == letters || i == t.size()) return s;
+  const std::string head = t.substr(0, i);
+  if (head[letters] != 'a' && head[letters] != 'n') return s;
+  if (t[i] == '_') ++i;
+  const std::string digits = t.substr(i);
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return s;
+  const auto nz = digits.find_first_not_of('0');
+  return head + "_" + (nz == std::string::npos ? "0" : digits.substr(nz));
 }
 
 KnotIndex KnotIndex::parse(const std::string& text, const std::string& origin) {
@@ -35,9 +59,11 @@ KnotIndex KnotIndex::parse(const std::string& text, const std::string& origin) {
     ++line_no;
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
-    std::string key, mirror, crossings, regina, dt, rolfsen, flags;
+    std::string key, mirror, crossings, regina, dt, rolfsen, flags, sig, extra;
     if (!(fields >> key >> mirror >> crossings >> regina >> dt >> rolfsen >> flags))
-      throw ParseError(origin, line_no, "expected 7 tab-separated fields");
+      throw ParseError(origin, line_no, "expected 7 or 8 tab-separated fields");
+    fields >> sig;
+    if (fields >> extra) throw ParseError(origin, line_no, "expected 7 or 8 tab-separated fields");
     KnotTableEntry e;
     try {
       std::size_t used = 0;
@@ -54,6 +80,7 @@ KnotIndex KnotIndex::parse(const std::string& text, const std::string& origin) {
     e.regina_name = opt(regina);
     e.dt_name = opt(dt);
     e.rolfsen_name = opt(rolfsen);
+    e.sig = sig;
     for (char f : flags) {
       if (f == 's') e.homfly_symmetric = true;
       else if (f == 'A') e.amphichiral = true;
@@ -63,7 +90,7 @@ KnotIndex KnotIndex::parse(const std::string& text, const std::string& origin) {
     const int i = static_cast<int>(index.entries_.size());
     index.by_key_.emplace(e.key, i);
     for (const auto* n : {&e.regina_name, &e.dt_name, &e.rolfsen_name})
-      if (!n->empty()) index.by_name_.emplace(*n, i);
+      if (!n->empty()) index.by_name_.emplace(canonical_knot_name(*n), i);
     if (e.crossings > index.max_crossings_) index.max_crossings_ = e.crossings;
     index.entries_.push_back(std::move(e));
   }
@@ -103,7 +130,7 @@ std::vector<const KnotTableEntry*> KnotIndex::with_key(std::uint64_t key) const 
 }
 
 const KnotTableEntry* KnotIndex::find_name(const std::string& name) const {
-  const auto it = by_name_.find(name);
+  const auto it = by_name_.find(canonical_knot_name(name));
   return it == by_name_.end() ? nullptr : &entries_[it->second];
 }
 

@@ -22,6 +22,9 @@ struct KnotTableEntry {
   bool homfly_symmetric = false;  // HOMFLY-PT cannot tell this knot from its mirror image
   bool amphichiral = false;       // proven equal to its mirror image (Reidemeister moves found)
   bool alternating = false;
+  // Regina's knot signature (Link::fromKnotSig) of a minimal diagram of this knot in the reference
+  // chirality (the one `key` belongs to), so the table can draw it; empty in old index files.
+  std::string sig;
 
   // The name people use: Rolfsen's if any, else the DT name, else Regina's.
   const std::string& display_name() const;
@@ -44,7 +47,9 @@ class KnotIndex {
   const std::vector<KnotTableEntry>& entries() const { return entries_; }
   // Entries whose reference key equals `key`.
   std::vector<const KnotTableEntry*> with_key(std::uint64_t key) const;
-  const KnotTableEntry* find_name(const std::string& name) const;  // any of the three names
+  // Any of the three names, in any usual spelling (canonical_knot_name): "12a_803", "12a_0803",
+  // "K12a803" and "12a803" are one knot.
+  const KnotTableEntry* find_name(const std::string& name) const;
   int max_crossings() const { return max_crossings_; }
 
  private:
@@ -54,9 +59,15 @@ class KnotIndex {
   int max_crossings_ = 0;
 };
 
+// The one spelling of a table name: a leading "K" dropped, the underscore put in and the number's
+// leading zeros dropped ("K11n34" -> "11n_34", "12a_0803" -> "12a_803", "13nh_0517" ->
+// "13nh_517"); Rolfsen names ("3_1") and anything else are returned trimmed but unchanged.
+std::string canonical_knot_name(const std::string& name);
+
 // One line of the index file (the tool writes with it, the loader reads with it):
-// key  mirror_key  crossings  regina  dt  rolfsen  flags  ('-' for an empty field; keys in hex;
-// flags: 's' HOMFLY-symmetric, 'A' proven amphichiral, 'a' alternating, '-' none).
+// key  mirror_key  crossings  regina  dt  rolfsen  flags  [sig]  ('-' for an empty field; keys in
+// hex; flags: 's' HOMFLY-symmetric, 'A' proven amphichiral, 'a' alternating, '-' none; sig as
+// KnotTableEntry::sig, absent from old files).
 std::string format_index_line(const KnotTableEntry& e);
 
 }  // namespace s4d

@@ -30,6 +30,31 @@ regina::Link to_regina_link(const KnotDiagram& d) {
   }
 }
 
+KnotDiagram diagram_from_regina(const regina::Link& link) {
+  KnotDiagram d;
+  d.crossings.resize(link.size());
+  for (std::size_t i = 0; i < link.size(); ++i) d.crossings[i].sign = link.crossing(i)->sign();
+  for (std::size_t c = 0; c < link.countComponents(); ++c) {
+    std::vector<int> comp;
+    const regina::StrandRef start = link.component(c);
+    if (start.crossing()) {
+      regina::StrandRef s = start;
+      do {
+        const int p = static_cast<int>(d.passages.size());
+        const int k = static_cast<int>(s.crossing()->index());
+        const bool over = s.strand() == 1;
+        d.passages.push_back({k, over, static_cast<int>(c), 0.0});
+        (over ? d.crossings[k].over : d.crossings[k].under) = p;
+        comp.push_back(p);
+        ++s;
+      } while (s != start);
+    }
+    d.components.push_back(std::move(comp));
+  }
+  d.normalise();
+  return d;
+}
+
 namespace {
 
 Laurent1 from_regina(const regina::Laurent<regina::Integer>& p) {

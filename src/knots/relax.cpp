@@ -62,6 +62,7 @@ void relax_step(const RelaxModel& m, RelaxData& d) {
   // with the exact segment distance when that bound is small.
   double gap = INFINITY;
   const double near = 3.0 * l0;
+  const double thick = m.thickness * l0;
   for (int i = 0; i < n; ++i) {
     const int ci = d.comp[i];
     const Vec3& xi = d.x[i];
@@ -84,7 +85,16 @@ void relax_step(const RelaxModel& m, RelaxData& d) {
       const Vec3& xj1 = d.x[next_of(m, d.comp[j], j)];
       const double bound = (mi - 0.5 * (d.x[j] + xj1)).norm() - hi - 0.5 * (xj1 - d.x[j]).norm();
       if (bound < near) {
-        gap = std::min(gap, segment_segment<3>(xi, xi1, d.x[j], xj1).distance);
+        const ClosestPoints<3> cp = segment_segment<3>(xi, xi1, d.x[j], xj1);
+        gap = std::min(gap, cp.distance);
+        if (cp.distance < thick && cp.distance > 0) {
+          const Vec3 push = (m.contact * l0 * (thick / cp.distance - 1.0) / cp.distance) * (cp.p - cp.q);
+          const int i1 = next_of(m, ci, i), j1 = next_of(m, d.comp[j], j);
+          d.force[i] += cp.wa[0] * push;
+          d.force[i1] += cp.wa[1] * push;
+          d.force[j] -= cp.wb[0] * push;
+          d.force[j1] -= cp.wb[1] * push;
+        }
       }
     }
   }

@@ -19,6 +19,12 @@ struct RelaxModel {
   double step = 0.15;       // gradient step, in units of the rest length
   double max_move = 0.2;    // cap per vertex per step, in units of the rest length
   double safety = 0.3;      // a vertex moves at most safety × (nearest non-neighbour segment gap)
+  // Contact: non-neighbouring segments nearer than thickness (× rest length) are pushed apart
+  // along their closest points, harder the nearer they are. Without it bending can pull two
+  // strands ever closer (the cap shrinks every step but never stops them) until rounding lets
+  // one pass through the other.
+  double thickness = 0.3;
+  double contact = 4.0;     // weight of that push (dimensionless)
   // Per component: first vertex index into the flat arrays, vertex count, rest edge length.
   std::vector<int> first, count;
   std::vector<double> rest_length;
