@@ -1,6 +1,8 @@
-// Knot engine benchmarks (issue 7): identification of a 500-point curve, from curve to name
-// (target <= 5 ms median, the live-naming budget), and relaxation of a 300-point curve (target
-// >= 1000 iterations per second).
+// Knot engine benchmarks (issues 7 and 26): identification of a 500-point curve, from curve to name
+// (target <= 5 ms median, the live-naming budget), the live panel's knot_info of 500-point prime
+// knots of up to 12 crossings made from the table (same budget), the further invariants where
+// candidates remain (off the UI thread, no budget), making table knots, and relaxation of a
+// 300-point curve (target >= 1000 iterations per second).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -9,6 +11,8 @@
 
 #include "knots/braid_closure.hpp"
 #include "knots/knot_identify.hpp"
+#include "knots/knot_info.hpp"
+#include "knots/knot_table.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
 #include "shape/knot_curves.hpp"
@@ -62,6 +66,56 @@ BENCHMARK(BM_IdentifyCurve500)->DenseRange(0, 8)->Unit(benchmark::kMillisecond)-
     ->ReportAggregatesOnly(true)->ComputeStatistics("max", [](const std::vector<double>& v) {
       return *std::max_element(v.begin(), v.end());
     });
+
+// 500-point curves of table knots up to 12 crossings (drawn, relaxed, resampled), seen from +z.
+const std::vector<Case>& table_cases() {
+  static const std::vector<Case> all = [] {
+    std::vector<Case> c;
+    for (const char* name : {"3_1", "7_4", "10_165", "11n_34", "12a_1", "12a_803", "12n_888"})
+      c.push_back({name, resample_curve_to_count(make_table_knot(name), 500)});
+    return c;
+  }();
+  return all;
+}
+
+void BM_KnotInfoLive500(benchmark::State& state) {
+  const Case& c = table_cases()[state.range(0)];
+  KnotIndex::shipped();
+  KnotInfoOptions o;
+  o.refine = false;  // the live path; the further invariants follow on the worker
+  KnotInfo k;
+  for (auto _ : state) {
+    k = knot_info(c.curve, std::nullopt, o);
+    benchmark::DoNotOptimize(k.name);
+  }
+  state.SetLabel(std::string(c.name) + " (" + std::to_string(k.view_crossings) + " in view) -> " + k.name);
+}
+BENCHMARK(BM_KnotInfoLive500)->DenseRange(0, 6)->Unit(benchmark::kMillisecond)->Repetitions(5)
+    ->ReportAggregatesOnly(true)->ComputeStatistics("max", [](const std::vector<double>& v) {
+      return *std::max_element(v.begin(), v.end());
+    });
+
+// The Conway knot: its mutant 11n_42 shares every polynomial; covers and a Reidemeister search.
+void BM_KnotInfoRefineConway(benchmark::State& state) {
+  const Case& c = table_cases()[3];
+  KnotInfo k;
+  for (auto _ : state) {
+    k = knot_info(c.curve);
+    benchmark::DoNotOptimize(k.name);
+  }
+  state.SetLabel(std::string(c.name) + " -> " + k.name + (k.proven ? " (proven)" : ""));
+}
+BENCHMARK(BM_KnotInfoRefineConway)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_MakeTableKnot(benchmark::State& state) {
+  const char* names[] = {"3_1", "10_165", "12a_1", "14nh_7499"};
+  const char* name = names[state.range(0)];
+  KnotIndex::shipped();
+  int points = 0;
+  for (auto _ : state) points = make_table_knot(name).point_count();
+  state.SetLabel(std::string(name) + ", " + std::to_string(points) + " points");
+}
+BENCHMARK(BM_MakeTableKnot)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 void BM_RelaxStep300(benchmark::State& state) {
   const Curve<3> k = resample_curve_to_count(torus_knot(2, 3, 900), 300);

@@ -1,5 +1,6 @@
-// `shadow4d knot identify|code|compare|relax|flip|resample`: the knot engine from the command
-// line, with --json for scripts. Curves come from any curve file, generator call or scene.
+// `shadow4d knot identify|info|code|compare|unknotting|make|relax|flip|resample|sketch|smooth-depth`:
+// the knot engine from the command line, with --json for scripts. Curves come from any curve file,
+// generator call or scene.
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -16,7 +17,10 @@
 #include "knots/depth_edit.hpp"
 #include "knots/dynadraw.hpp"
 #include "knots/knot_curve.hpp"
+#include "knots/knot_exercises.hpp"
 #include "knots/knot_identify.hpp"
+#include "knots/knot_info.hpp"
+#include "knots/knot_table.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
 #include "knots/sketch.hpp"
@@ -138,6 +142,27 @@ void print_identification(const KnotIdentification& id, const std::string& inden
       std::cout << indent << "component " << i << ": " << id.components[i].name << "\n";
 }
 
+json info_json(const KnotInfo& k) {
+  return {{"name", k.name},
+          {"proven", k.proven},
+          {"chirality", k.chirality},
+          {"candidates", k.candidates},
+          {"decided_by", k.decided_by},
+          {"further_used", k.further_used},
+          {"view_crossings", k.view_crossings},
+          {"simplified_crossings", k.simplified_crossings},
+          {"gauss", k.gauss_code},
+          {"signed_gauss", k.signed_gauss_code},
+          {"writhe", k.writhe},
+          {"components", k.components},
+          {"linking_numbers", k.linking},
+          {"alexander", k.alexander},
+          {"jones", k.jones},
+          {"homfly_pt", k.homfly},
+          {"determinant", k.determinant},
+          {"milliseconds", k.milliseconds}};
+}
+
 json codes_json(const KnotDiagram& d) {
   const ReginaCodes r = regina_codes(d);
   return {{"crossings", d.crossing_count()},
@@ -210,21 +235,107 @@ void setup(CLI::App& knot) {
 
   static Common ca;
   static std::string file_b;
-  auto* compare = knot.add_subcommand("compare", "are two curves the same knot?");
+  auto* compare = knot.add_subcommand("compare", "are two curves the same knot? (the user-study exercise)");
   add_common(compare, ca, false);
   compare->add_option("other", file_b, "the second curve")->required();
   compare->callback([] {
-    const auto r = compare_knots(load_knot_curve(ca.file), load_knot_curve(file_b));
+    const auto r = same_knot(load_knot_curve(ca.file), load_knot_curve(file_b));
     if (ca.json_out) {
-      std::cout << json{{"verdict", sameness_name(r.verdict)},
+      std::cout << json{{"answer", same_answer_name(r.answer)},
+                        {"mirror_images", r.mirror_images},
                         {"reason", r.reason},
-                        {"a", identification_json(r.a)},
-                        {"b", identification_json(r.b)}}
+                        {"a", info_json(r.a)},
+                        {"b", info_json(r.b)}}
                        .dump(2)
                 << "\n";
     } else {
-      std::cout << sameness_name(r.verdict) << ": " << r.reason << "\n";
+      std::cout << same_answer_name(r.answer) << ": " << r.reason << "\n";
     }
+  });
+
+  static Common ic;
+  static bool no_refine = false;
+  auto* info = knot.add_subcommand("info", "the live information panel of a curve in a view");
+  add_common(info, ic);
+  info->add_flag("--no-refine", no_refine, "skip the further invariants (covers, Reidemeister search)");
+  info->callback([] {
+    KnotInfoOptions o;
+    o.refine = !no_refine;
+    const Curve<3> c = load_knot_curve(ic.file);
+    const KnotInfo k = knot_info(c, ic.view.empty() ? std::nullopt : std::optional(parse_view(ic.view)), o);
+    if (ic.json_out) {
+      std::cout << info_json(k).dump(2) << "\n";
+      return;
+    }
+    std::cout << "name: " << k.name << (k.proven ? "" : "  [not proven]") << "\n";
+    if (!k.chirality.empty()) std::cout << "chirality: " << k.chirality << "\n";
+    if (k.candidates.size() > 1) {
+      std::cout << "candidates:";
+      for (const auto& x : k.candidates) std::cout << " " << x << ";";
+      std::cout << "\n";
+    }
+    for (const auto& x : k.decided_by) std::cout << "decided by: " << x << "\n";
+    for (const auto& x : k.further_used) std::cout << "further invariant tried: " << x << "\n";
+    std::cout << "crossings: " << k.view_crossings << " in this view, " << k.simplified_crossings
+              << " after simplification\n"
+              << "Gauss code: " << k.gauss_code << "\n"
+              << "writhe: " << k.writhe << "\n";
+    if (k.components > 1) std::cout << "linking numbers: " << json(k.linking).dump() << "\n";
+    std::cout << "Alexander: " << k.alexander << "\nJones: " << k.jones << "\nHOMFLY-PT: " << k.homfly
+              << "\ndeterminant: " << k.determinant << "\n(" << k.milliseconds << " ms)\n";
+  });
+
+  static Common uc;
+  auto* unknotting = knot.add_subcommand(
+      "unknotting", "for each crossing of the diagram in a view, whether changing it unknots the knot");
+  add_common(unknotting, uc);
+  unknotting->callback([] {
+    const Curve<3> c = load_knot_curve(uc.file);
+    const UnknottingReport r =
+        unknotting_crossings(c, uc.view.empty() ? std::nullopt : std::optional(parse_view(uc.view)));
+    if (uc.json_out) {
+      json cs = json::array();
+      for (const auto& x : r.crossings)
+        cs.push_back({{"label", x.label}, {"x", x.point.x()}, {"y", x.point.y()}, {"unknots", x.unknots},
+                      {"result", x.result}});
+      std::cout << json{{"knot", r.knot}, {"is_unknot", r.is_unknot}, {"crossings", cs},
+                        {"unknotting", r.unknotting}}.dump(2)
+                << "\n";
+      return;
+    }
+    std::cout << "knot: " << r.knot << "\n";
+    for (const auto& x : r.crossings)
+      std::cout << "crossing " << x.label << ": " << (x.unknots ? "unknots it" : "does not unknot it (gives " + x.result + ")")
+                << "\n";
+    std::cout << r.unknotting.size() << " of " << r.crossings.size() << " crossing changes unknot it\n";
+  });
+
+  static std::string make_name, make_out;
+  static bool make_list = false, make_json = false;
+  static DiagramEmbedding embed;
+  auto* make = knot.add_subcommand("make", "a 3D curve of a knot from the table (3_1, 11n_34, T(2,5), Hopf link, m3_1, ...)");
+  make->add_option("name", make_name, "knot name; 'NAME mirror', 'mNAME' or 'NAME*' for the mirror image");
+  make->add_option("--out", make_out, "where to write the curve");
+  make->add_option("--relax", embed.relax_iterations, "relaxation steps")->capture_default_str()->check(CLI::Range(0, 1000000));
+  make->add_flag("--list", make_list, "list the table's names (with crossings and source) instead");
+  make->add_flag("--json", make_json, "machine-readable output");
+  make->callback([] {
+    if (make_list) {
+      for (const auto& t : knot_table_names()) std::cout << t.name << "\t" << t.crossings << "\t" << t.source << "\n";
+      return;
+    }
+    if (make_name.empty() || make_out.empty()) throw Error("knot make needs a NAME and --out FILE (or --list)");
+    const auto t0 = std::chrono::steady_clock::now();
+    const Curve<3> c = make_table_knot(make_name, embed);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    write_shape_file(c, make_out);
+    const KnotIdentification id = identify_knot(c);
+    if (make_json)
+      std::cout << json{{"name", table_knot(make_name).name}, {"points", c.point_count()}, {"milliseconds", ms},
+                        {"identified", id.name}, {"proven", id.proven}}.dump(2) << "\n";
+    else
+      std::cout << "made " << table_knot(make_name).name << ": " << c.point_count() << " points in " << ms
+                << " ms, identified as " << id.headline() << "; wrote " << make_out << "\n";
   });
 
   static Common rc;
@@ -397,7 +508,9 @@ void setup(CLI::App& knot) {
 }
 
 const CommandRegistrar kKnot(
-    "knot", "knot engine: identify, code, compare, relax, flip, resample, sketch, smooth-depth", setup);
+    "knot",
+    "knot engine: identify, info, code, compare, unknotting, make, relax, flip, resample, sketch, smooth-depth",
+    setup);
 
 }  // namespace
 }  // namespace s4d::cli
