@@ -296,43 +296,60 @@ void setup(CLI::App& knot) {
     if (uc.json_out) {
       json cs = json::array();
       for (const auto& x : r.crossings)
-        cs.push_back({{"label", x.label}, {"x", x.point.x()}, {"y", x.point.y()}, {"unknots", x.unknots},
+        cs.push_back({{"label", x.label},
+                      {"x", x.point.x()},
+                      {"y", x.point.y()},
+                      {"unknots", x.unknots},
                       {"result", x.result}});
-      std::cout << json{{"knot", r.knot}, {"is_unknot", r.is_unknot}, {"crossings", cs},
-                        {"unknotting", r.unknotting}}.dump(2)
+      std::cout << json{{"knot", r.knot},
+                        {"is_unknot", r.is_unknot},
+                        {"crossings", cs},
+                        {"unknotting", r.unknotting}}
+                       .dump(2)
                 << "\n";
       return;
     }
     std::cout << "knot: " << r.knot << "\n";
     for (const auto& x : r.crossings)
-      std::cout << "crossing " << x.label << ": " << (x.unknots ? "unknots it" : "does not unknot it (gives " + x.result + ")")
-                << "\n";
+      std::cout << "crossing " << x.label << ": "
+                << (x.unknots ? "unknots it" : "does not unknot it (gives " + x.result + ")") << "\n";
     std::cout << r.unknotting.size() << " of " << r.crossings.size() << " crossing changes unknot it\n";
   });
 
   static std::string make_name, make_out;
   static bool make_list = false, make_json = false;
   static DiagramEmbedding embed;
-  auto* make = knot.add_subcommand("make", "a 3D curve of a knot from the table (3_1, 11n_34, T(2,5), Hopf link, m3_1, ...)");
+  auto* make = knot.add_subcommand(
+      "make", "a 3D curve of a knot from the table (3_1, 11n_34, T(2,5), Hopf link, m3_1, ...)");
   make->add_option("name", make_name, "knot name; 'NAME mirror', 'mNAME' or 'NAME*' for the mirror image");
   make->add_option("--out", make_out, "where to write the curve");
-  make->add_option("--relax", embed.relax_iterations, "relaxation steps")->capture_default_str()->check(CLI::Range(0, 1000000));
+  make->add_option("--relax", embed.relax_iterations, "relaxation steps")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000000));
   make->add_flag("--list", make_list, "list the table's names (with crossings and source) instead");
   make->add_flag("--json", make_json, "machine-readable output");
   make->callback([] {
     if (make_list) {
-      for (const auto& t : knot_table_names()) std::cout << t.name << "\t" << t.crossings << "\t" << t.source << "\n";
+      for (const auto& t : knot_table_names())
+        std::cout << t.name << "\t" << t.crossings << "\t" << t.source << "\n";
       return;
     }
-    if (make_name.empty() || make_out.empty()) throw Error("knot make needs a NAME and --out FILE (or --list)");
+    if (make_name.empty() || make_out.empty())
+      throw Error("knot make needs a NAME and --out FILE (or --list)");
     const auto t0 = std::chrono::steady_clock::now();
     const Curve<3> c = make_table_knot(make_name, embed);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     write_shape_file(c, make_out);
     const KnotIdentification id = identify_knot(c);
     if (make_json)
-      std::cout << json{{"name", table_knot(make_name).name}, {"points", c.point_count()}, {"milliseconds", ms},
-                        {"identified", id.name}, {"proven", id.proven}}.dump(2) << "\n";
+      std::cout << json{{"name", table_knot(make_name).name},
+                        {"points", c.point_count()},
+                        {"milliseconds", ms},
+                        {"identified", id.name},
+                        {"proven", id.proven}}
+                       .dump(2)
+                << "\n";
     else
       std::cout << "made " << table_knot(make_name).name << ": " << c.point_count() << " points in " << ms
                 << " ms, identified as " << id.headline() << "; wrote " << make_out << "\n";

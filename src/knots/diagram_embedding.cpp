@@ -113,8 +113,10 @@ Drawing tutte(const Map& m) {
     for (int u : adj[v]) {
       if (u == outer_node) continue;
       a(var[v], var[v]) += 1;
-      if (var[u] >= 0) a(var[v], var[u]) -= 1;
-      else b.row(var[v]) += pos[u].transpose();
+      if (var[u] >= 0)
+        a(var[v], var[u]) -= 1;
+      else
+        b.row(var[v]) += pos[u].transpose();
     }
   }
   const Eigen::MatrixXd sol = a.partialPivLu().solve(b);

@@ -11,9 +11,12 @@ namespace s4d {
 
 const char* same_answer_name(SameAnswer a) {
   switch (a) {
-    case SameAnswer::kSame: return "same";
-    case SameAnswer::kDifferent: return "different";
-    case SameAnswer::kCannotTell: return "cannot tell";
+    case SameAnswer::kSame:
+      return "same";
+    case SameAnswer::kDifferent:
+      return "different";
+    case SameAnswer::kCannotTell:
+      return "cannot tell";
   }
   return "cannot tell";
 }
@@ -72,11 +75,13 @@ SameKnotAnswer compare_links(SameKnotAnswer r) {
   }
   if (a.simplified_crossings == 0 && b.simplified_crossings == 0) {
     r.answer = SameAnswer::kSame;
-    r.reason = "both are the unlink of " + std::to_string(a.components) + " components (proven by simplification)";
+    r.reason =
+        "both are the unlink of " + std::to_string(a.components) + " components (proven by simplification)";
     return r;
   }
   r.answer = SameAnswer::kCannotTell;
-  r.reason = "the invariants that do not depend on the orientation of the components agree; that does not decide";
+  r.reason =
+      "the invariants that do not depend on the orientation of the components agree; that does not decide";
   return r;
 }
 
@@ -110,7 +115,8 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
   // Both proven table answers: same or different by name and chirality.
   if (pa && pb) {
     bool same_entries = pa->size() == pb->size();
-    for (std::size_t i = 0; same_entries && i < pa->size(); ++i) same_entries = (*pa)[i].entry == (*pb)[i].entry;
+    for (std::size_t i = 0; same_entries && i < pa->size(); ++i)
+      same_entries = (*pa)[i].entry == (*pb)[i].entry;
     if (same_entries) {
       bool same = true;
       for (std::size_t i = 0; i < pa->size(); ++i)
@@ -119,10 +125,11 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
       for (const auto& f : *pa) unknown = unknown || f.chirality == Chirality::kUnknown;
       if (!same) {
         r.answer = SameAnswer::kDifferent;
-        r.reason = "one is " + a.name + ", the other " + b.name + ": " +
-                   (pa->size() == 1 ? pa->front().entry->display_name() + " is chiral and these are mirror images"
-                                    : std::string("their factors differ in chirality")) +
-                   " (HOMFLY-PT tells them apart)";
+        r.reason =
+            "one is " + a.name + ", the other " + b.name + ": " +
+            (pa->size() == 1 ? pa->front().entry->display_name() + " is chiral and these are mirror images"
+                             : std::string("their factors differ in chirality")) +
+            " (HOMFLY-PT tells them apart)";
         return r;
       }
       if (!unknown) {
@@ -132,7 +139,8 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
       }
       r.answer = SameAnswer::kCannotTell;
       r.reason = "both are " + pa->front().entry->display_name() +
-                 ", but whether they are the same or mirror images cannot be told: its HOMFLY-PT polynomial is symmetric";
+                 ", but whether they are the same or mirror images cannot be told: its HOMFLY-PT polynomial "
+                 "is symmetric";
       return r;
     }
   }
@@ -143,7 +151,8 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
     std::string va, vb;
   };
   const Check checks[] = {
-      {"determinants", ia.determinant != ib.determinant, std::to_string(ia.determinant), std::to_string(ib.determinant)},
+      {"determinants", ia.determinant != ib.determinant, std::to_string(ia.determinant),
+       std::to_string(ib.determinant)},
       {"Alexander polynomials", !(ia.alexander == ib.alexander), a.alexander, b.alexander},
       {"Jones polynomials", !(ia.jones == ib.jones), a.jones, b.jones},
       {"HOMFLY-PT polynomials", !(ia.homfly == ib.homfly), a.homfly, b.homfly},
@@ -154,7 +163,9 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
       r.reason = std::string("their ") + c.what + " differ (" + c.va + " and " + c.vb + ")";
       if (pa && pb) r.reason = "one is " + a.name + ", the other " + b.name + ": " + r.reason;
       if (r.mirror_images)
-        r.reason += "; they are the HOMFLY-PT of mirror images: a chiral knot and its mirror image are different knots";
+        r.reason +=
+            "; they are the HOMFLY-PT of mirror images: a chiral knot and its mirror image are different "
+            "knots";
       return r;
     }
   // Same polynomials: the further invariants may have split the candidates.
@@ -162,16 +173,18 @@ SameKnotAnswer same_knot(const Curve<3>& ca, const Curve<3>& cb, const KnotInfoO
   for (const auto& x : a.candidates)
     if (std::find(b.candidates.begin(), b.candidates.end(), x) != b.candidates.end()) shared.push_back(x);
   if (shared.empty() && !a.candidates.empty() && !b.candidates.empty() &&
-      a.identification.invariants.simplified_crossings <= 14 && b.identification.invariants.simplified_crossings <= 14) {
+      a.identification.invariants.simplified_crossings <= 14 &&
+      b.identification.invariants.simplified_crossings <= 14) {
     r.answer = SameAnswer::kDifferent;
-    r.reason = "their polynomials agree, but no knot is a candidate for both (first: " + a.name + "; second: " +
-               b.name + ")" + proof_words(a);
+    r.reason = "their polynomials agree, but no knot is a candidate for both (first: " + a.name +
+               "; second: " + b.name + ")" + proof_words(a);
     return r;
   }
   r.answer = SameAnswer::kCannotTell;
   r.reason = "they share every invariant computed (HOMFLY-PT, Jones, Alexander" +
-             std::string(a.further_used.empty() ? "" : ", and the further invariants") + "), which does not decide: " +
-             "both may be any of " + std::to_string(std::max<std::size_t>(shared.size(), 1)) + " knot(s)";
+             std::string(a.further_used.empty() ? "" : ", and the further invariants") +
+             "), which does not decide: " + "both may be any of " +
+             std::to_string(std::max<std::size_t>(shared.size(), 1)) + " knot(s)";
   return r;
 }
 
@@ -180,8 +193,8 @@ UnknottingReport unknotting_crossings(const Curve<3>& curve, const std::optional
   Frame<3> used;
   const KnotDiagram d = diagram_from_curve(curve, view.value_or(Frame<3>()), {}, &used);
   if (d.component_count() != 1)
-    throw Error("the unknotting exercise needs a knot; this curve has " + std::to_string(d.component_count()) +
-                " components");
+    throw Error("the unknotting exercise needs a knot; this curve has " +
+                std::to_string(d.component_count()) + " components");
   r.frame = used;
   IdentifyOptions o;
   o.frame = used;
@@ -200,8 +213,9 @@ UnknottingReport unknotting_crossings(const Curve<3>& curve, const std::optional
     } else {
       c.unknots = false;  // a non-trivial HOMFLY-PT polynomial: knotted
     }
-    c.result = c.unknots ? "unknot" : after.kind == KnotKind::kUnknot ? "not the unknot (its complement is not a solid torus)"
-                                                                          : after.name;
+    c.result = c.unknots                         ? "unknot"
+               : after.kind == KnotKind::kUnknot ? "not the unknot (its complement is not a solid torus)"
+                                                 : after.name;
     if (c.unknots) r.unknotting.push_back(c.label);
     r.crossings.push_back(std::move(c));
   }

@@ -30,26 +30,27 @@ struct SameKnotAnswer {
 SameKnotAnswer same_knot(const Curve<3>& a, const Curve<3>& b, const KnotInfoOptions& options = {});
 
 struct CrossingChangeResult {
-  int label = 0;                // the crossing, 1-based as in the diagram's codes (`knot code`)
-  Vec2 point = Vec2::Zero();    // where it is in the view's shadow coordinates
-  bool unknots = false;         // changing it gives the unknot
-  bool proven = true;           // that answer is proven (always, unless recognition was skipped)
-  std::string result;           // the name of what the change gives ("unknot", "4_1", ...)
+  int label = 0;              // the crossing, 1-based as in the diagram's codes (`knot code`)
+  Vec2 point = Vec2::Zero();  // where it is in the view's shadow coordinates
+  bool unknots = false;       // changing it gives the unknot
+  bool proven = true;         // that answer is proven (always, unless recognition was skipped)
+  std::string result;         // the name of what the change gives ("unknot", "4_1", ...)
 };
 
 struct UnknottingReport {
-  std::string knot;             // the name of the knot as drawn
-  bool is_unknot = false;       // it already is the unknot (no change is needed)
-  Frame<3> frame;               // the view used (a tiny turn of the one asked for when not generic)
+  std::string knot;        // the name of the knot as drawn
+  bool is_unknot = false;  // it already is the unknot (no change is needed)
+  Frame<3> frame;          // the view used (a tiny turn of the one asked for when not generic)
   std::vector<CrossingChangeResult> crossings;  // one per crossing of the diagram, by label
-  std::vector<int> unknotting;  // labels of the crossings whose change unknots it
+  std::vector<int> unknotting;                  // labels of the crossings whose change unknots it
 };
 
 // For each crossing of the curve's diagram in `view` (nullopt: its own xy), whether changing
 // that crossing alone gives the unknot: proven by simplification to no crossings, refuted by a
 // non-trivial HOMFLY-PT polynomial, else decided by Regina's solid-torus recognition. Throws
 // Error for invalid curves and for links (a crossing change of a knot is asked for).
-UnknottingReport unknotting_crossings(const Curve<3>& curve, const std::optional<Frame<3>>& view = std::nullopt);
+UnknottingReport unknotting_crossings(const Curve<3>& curve,
+                                      const std::optional<Frame<3>>& view = std::nullopt);
 
 // The label of the crossing nearest `point` (shadow coordinates of report.frame), or 0 for none.
 int nearest_crossing(const UnknottingReport& report, const Vec2& point);

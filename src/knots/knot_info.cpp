@@ -17,28 +17,35 @@ namespace {
 
 std::string factor_label(const KnotFactor& f) {
   std::string s = f.text();
-  if (f.entry && !f.entry->rolfsen_name.empty() && !f.entry->dt_name.empty()) s += " (DT " + f.entry->dt_name + ")";
+  if (f.entry && !f.entry->rolfsen_name.empty() && !f.entry->dt_name.empty())
+    s += " (DT " + f.entry->dt_name + ")";
   return s;
 }
 
 std::string name_of(const KnotIdentification& id) {
   if (id.candidates.size() == 1)
-    return id.candidates[0].size() == 1 ? factor_label(id.candidates[0][0]) : factorisation_text(id.candidates[0]);
+    return id.candidates[0].size() == 1 ? factor_label(id.candidates[0][0])
+                                        : factorisation_text(id.candidates[0]);
   std::string s = "one of:";
-  for (std::size_t i = 0; i < id.candidates.size(); ++i) s += (i ? ", " : " ") + factorisation_text(id.candidates[i]);
+  for (std::size_t i = 0; i < id.candidates.size(); ++i)
+    s += (i ? ", " : " ") + factorisation_text(id.candidates[i]);
   return s;
 }
 
 std::string chirality_sentence(const KnotFactor& f) {
   const std::string n = f.entry->display_name();
-  const std::string table = !f.entry->rolfsen_name.empty() ? "the Rolfsen table's (Knot Atlas) diagram"
-                                                            : "the census diagram";
+  const std::string table =
+      !f.entry->rolfsen_name.empty() ? "the Rolfsen table's (Knot Atlas) diagram" : "the census diagram";
   switch (f.chirality) {
-    case Chirality::kAsTable: return n + " as drawn in " + table + ", not its mirror image";
-    case Chirality::kMirror: return "the mirror image of " + n + " as drawn in " + table;
-    case Chirality::kAmphichiral: return n + " is amphichiral: the same knot as its mirror image (proven)";
+    case Chirality::kAsTable:
+      return n + " as drawn in " + table + ", not its mirror image";
+    case Chirality::kMirror:
+      return "the mirror image of " + n + " as drawn in " + table;
+    case Chirality::kAmphichiral:
+      return n + " is amphichiral: the same knot as its mirror image (proven)";
     case Chirality::kUnknown:
-      return "unknown: HOMFLY-PT cannot tell " + n + " from its mirror image, and no proof either way is known here";
+      return "unknown: HOMFLY-PT cannot tell " + n +
+             " from its mirror image, and no proof either way is known here";
   }
   return {};
 }
@@ -75,12 +82,24 @@ std::string cover_signature(const KnotDiagram& diagram, int max_index) {
   for (int k = 2; k <= max_index; ++k) {
     std::vector<std::string> homology;
     switch (k) {
-      case 2: covers_of_index<2>(g, homology); break;
-      case 3: covers_of_index<3>(g, homology); break;
-      case 4: covers_of_index<4>(g, homology); break;
-      case 5: covers_of_index<5>(g, homology); break;
-      case 6: covers_of_index<6>(g, homology); break;
-      case 7: covers_of_index<7>(g, homology); break;
+      case 2:
+        covers_of_index<2>(g, homology);
+        break;
+      case 3:
+        covers_of_index<3>(g, homology);
+        break;
+      case 4:
+        covers_of_index<4>(g, homology);
+        break;
+      case 5:
+        covers_of_index<5>(g, homology);
+        break;
+      case 6:
+        covers_of_index<6>(g, homology);
+        break;
+      case 7:
+        covers_of_index<7>(g, homology);
+        break;
     }
     std::sort(homology.begin(), homology.end());
     sig += std::to_string(k) + ":";
@@ -102,14 +121,18 @@ void refine_identification(KnotIdentification& id, const KnotInfoOptions& option
       decided.push_back("the complement is a solid torus (Regina's unknot recognition)");
     } else {
       id.kind = KnotKind::kUnknown;
-      id.name = "a knot with trivial HOMFLY-PT polynomial that is not the unknot (its complement is not a solid torus)";
+      id.name =
+          "a knot with trivial HOMFLY-PT polynomial that is not the unknot (its complement is not a solid "
+          "torus)";
       id.proven = true;
       decided.push_back("the complement is not a solid torus (Regina's unknot recognition)");
     }
     return;
   }
   if (id.candidates.size() < 2) return;
-  const auto prime_with_diagram = [](const KnotFactorisation& f) { return f.size() == 1 && !f[0].entry->sig.empty(); };
+  const auto prime_with_diagram = [](const KnotFactorisation& f) {
+    return f.size() == 1 && !f[0].entry->sig.empty();
+  };
 
   // Covers: the number and homology of index-k covers are invariants of the knot group.
   if (options.max_cover_index >= 2) {
@@ -133,10 +156,12 @@ void refine_identification(KnotIdentification& id, const KnotInfoOptions& option
   if (id.candidates.size() > 1 && options.rewrite_height >= 0) {
     std::vector<std::pair<std::string, std::size_t>> targets;
     for (std::size_t i = 0; i < id.candidates.size(); ++i)
-      if (prime_with_diagram(id.candidates[i])) targets.emplace_back(table_link(id.candidates[i][0]).knotSig(), i);
+      if (prime_with_diagram(id.candidates[i]))
+        targets.emplace_back(table_link(id.candidates[i][0]).knotSig(), i);
     regina::Link link = to_regina_link(id.diagram);
     link.intelligentSimplify();
-    used.push_back("a Reidemeister search (Regina's rewrite, up to " + std::to_string(options.rewrite_height) +
+    used.push_back("a Reidemeister search (Regina's rewrite, up to " +
+                   std::to_string(options.rewrite_height) +
                    " extra crossing(s)) towards the candidates' table diagrams");
     std::optional<std::size_t> hit;
     auto match = [&](const std::string& sig) {
@@ -161,7 +186,8 @@ void refine_identification(KnotIdentification& id, const KnotInfoOptions& option
   id.name = name_of(id);
 }
 
-KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view, const KnotInfoOptions& options) {
+KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view,
+                   const KnotInfoOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const KnotIndex& index = options.index ? *options.index : KnotIndex::shipped();
   IdentifyOptions o;
@@ -208,7 +234,8 @@ KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view, c
   info.chirality = chirality_text(id);
   if (id.kind == KnotKind::kUnknot) info.candidates = {"unknot"};
   for (const auto& f : id.candidates) info.candidates.push_back(factorisation_text(f));
-  info.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  info.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return info;
 }
 

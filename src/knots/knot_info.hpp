@@ -24,32 +24,32 @@ struct KnotInfoOptions {
   // Try the further invariants when candidates remain (or an unknot is not yet proven). These can
   // take from milliseconds to seconds; without them knot_info stays within the live budget.
   bool refine = true;
-  int max_cover_index = 5;   // covers of the knot group of index 2 .. this (<= 7)
-  int rewrite_height = 1;    // Reidemeister search: extra crossings allowed (0: none)
+  int max_cover_index = 5;           // covers of the knot group of index 2 .. this (<= 7)
+  int rewrite_height = 1;            // Reidemeister search: extra crossings allowed (0: none)
   const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
 };
 
 struct KnotInfo {
   // In the view
-  int view_crossings = 0;        // crossings of the curve's diagram in the view
-  int simplified_crossings = 0;  // after Regina's simplification (>= the crossing number)
-  std::string gauss_code;        // classical ("1, -2, 3, -1, 2, -3"; components by " | ")
-  std::string signed_gauss_code; // the panel's form ("1+a, 2+b, ...")
-  int writhe = 0;                // of the diagram in the view
+  int view_crossings = 0;         // crossings of the curve's diagram in the view
+  int simplified_crossings = 0;   // after Regina's simplification (>= the crossing number)
+  std::string gauss_code;         // classical ("1, -2, 3, -1, 2, -3"; components by " | ")
+  std::string signed_gauss_code;  // the panel's form ("1+a, 2+b, ...")
+  int writhe = 0;                 // of the diagram in the view
   int components = 0;
   std::vector<std::vector<int>> linking;  // components × components (links)
   // Invariants, as the panel shows them
-  std::string alexander, jones, homfly;   // in t (or t^(1/2)); HOMFLY-PT in a and z
+  std::string alexander, jones, homfly;  // in t (or t^(1/2)); HOMFLY-PT in a and z
   std::int64_t determinant = 0;
   // The name
-  std::string name;                     // "3_1 (DT 3a_1) mirror", "11n_34", "unknot", a link's line
-  std::string chirality;                // a sentence: which of the knot and its mirror this is
-  std::vector<std::string> candidates;  // every answer still possible (one when decided)
-  bool proven = false;                  // no other answer is possible
-  std::vector<std::string> decided_by;  // the invariants and proofs that decided it, in order
-  std::vector<std::string> further_used;// the further invariants tried (decisive or not)
-  KnotIdentification identification;    // everything, for callers that want more
-  double milliseconds = 0;              // time taken
+  std::string name;                       // "3_1 (DT 3a_1) mirror", "11n_34", "unknot", a link's line
+  std::string chirality;                  // a sentence: which of the knot and its mirror this is
+  std::vector<std::string> candidates;    // every answer still possible (one when decided)
+  bool proven = false;                    // no other answer is possible
+  std::vector<std::string> decided_by;    // the invariants and proofs that decided it, in order
+  std::vector<std::string> further_used;  // the further invariants tried (decisive or not)
+  KnotIdentification identification;      // everything, for callers that want more
+  double milliseconds = 0;                // time taken
 };
 
 // The curve as seen through `view` (nullopt: its own xy, i.e. the identity Frame<3>). Throws
@@ -78,7 +78,7 @@ std::string cover_signature(const KnotDiagram& diagram, int max_index);
 class KnotInfoWorker {
  public:
   struct Result {
-    std::uint64_t request = 0;  // submit()'s number for it
+    std::uint64_t request = 0;     // submit()'s number for it
     std::optional<KnotInfo> info;  // absent when the curve was refused
     std::string error;             // why it was refused ("" when info is set)
   };

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <numeric>
 #include <numbers>
+#include <numeric>
 
 #include "core/error.hpp"
 #include "knots/braid_closure.hpp"
@@ -117,8 +117,7 @@ std::vector<TableName> knot_table_names(const KnotIndex* index_in) {
     for (int q = p + 1; q * (p - 1) <= index.max_crossings(); ++q)
       if (std::gcd(p, q) == 1)
         out.push_back({"T(" + std::to_string(p) + "," + std::to_string(q) + ")", q * (p - 1), "torus"});
-  for (const auto& l : named_links())
-    out.push_back({l.name, static_cast<int>(l.word.size()), "link"});
+  for (const auto& l : named_links()) out.push_back({l.name, static_cast<int>(l.word.size()), "link"});
   // Rolfsen and DT names sort by crossings, then by their number ("8_2" before "8_10").
   auto number = [](const std::string& s) {
     const auto u = s.rfind('_');
@@ -206,7 +205,8 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
       return finish(std::move(t), mirror);
     }
   const KnotTableEntry* e = index.find_name(name);
-  if (!e && !mirror && name.size() > 1 && name[0] == 'm' && std::isdigit(static_cast<unsigned char>(name[1]))) {
+  if (!e && !mirror && name.size() > 1 && name[0] == 'm' &&
+      std::isdigit(static_cast<unsigned char>(name[1]))) {
     e = index.find_name(name.substr(1));
     mirror = e != nullptr;
   }

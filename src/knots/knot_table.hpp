@@ -14,9 +14,9 @@ namespace s4d {
 
 // One name of the picker's list.
 struct TableName {
-  std::string name;     // as typed back into make_table_knot: "3_1", "11n_34", "T(2,5)", "Hopf link"
-  int crossings = 0;    // crossing number (links: of the table's diagram)
-  std::string source;   // "Rolfsen", "DT", "census" (Regina's label only), "torus", "link"
+  std::string name;    // as typed back into make_table_knot: "3_1", "11n_34", "T(2,5)", "Hopf link"
+  int crossings = 0;   // crossing number (links: of the table's diagram)
+  std::string source;  // "Rolfsen", "DT", "census" (Regina's label only), "torus", "link"
 };
 
 // Every name, ordered by crossings and then as the tables order them (fast; the index is loaded
@@ -30,11 +30,11 @@ std::vector<std::string> close_table_names(const std::string& name, std::size_t 
 
 // A name resolved: what it is and a diagram of it (in the table's chirality, or its mirror).
 struct TableKnot {
-  std::string name;            // canonical spelling, " mirror" appended for a mirror image
-  std::string source;          // as in TableName
+  std::string name;    // canonical spelling, " mirror" appended for a mirror image
+  std::string source;  // as in TableName
   bool mirror = false;
   const KnotTableEntry* entry = nullptr;  // prime knots of the index; null for torus links, links
-  KnotDiagram diagram;         // combinatorial diagram (no geometry)
+  KnotDiagram diagram;                    // combinatorial diagram (no geometry)
 };
 
 // Accepts any spelling the index knows ("12a_803", "K12a803", "13nh_517"), "T(p,q)" (negative q

@@ -91,7 +91,8 @@ void expect_matches_reference(const Curve<3>& c, int* unknotting = nullptr) {
   ASSERT_FALSE(r.crossings.empty());
   int count = 0;
   for (const auto& x : r.crossings) {
-    EXPECT_EQ(x.unknots, reference_unknots(c, r.frame, x.label)) << "crossing " << x.label << ": " << x.result;
+    EXPECT_EQ(x.unknots, reference_unknots(c, r.frame, x.label))
+        << "crossing " << x.label << ": " << x.result;
     count += x.unknots;
   }
   EXPECT_EQ(static_cast<int>(r.unknotting.size()), count);
@@ -110,8 +111,7 @@ TEST(Unknotting, EveryCrossingOfTheTrefoilUnknotsIt) {
 }
 
 TEST(Unknotting, SomeCrossingsOf5_2And6_1UnknotThemAndSomeDoNot) {
-  for (const auto& [name, strands, word] :
-       std::vector<std::tuple<std::string, int, std::vector<int>>>{
+  for (const auto& [name, strands, word] : std::vector<std::tuple<std::string, int, std::vector<int>>>{
            {"5_2", 3, {-1, -1, -1, -2, 1, -2}}, {"6_1", 4, {-1, -1, -2, 1, 3, -2, 3}}}) {
     SCOPED_TRACE(name);
     const Curve<3> c = braid_closure(strands, word);

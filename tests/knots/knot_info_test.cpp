@@ -57,7 +57,8 @@ TEST(KnotInfo, FigureEightAndCinquefoil) {
 
   // 5_1 (Knot Atlas, left-handed): V = -t^-7 + t^-6 - t^-5 + t^-4 + t^-2, Delta = t^2 - t + 1 - ...
   const KnotInfo c = knot_info(make_table_knot("5_1"));
-  EXPECT_EQ(c.identification.invariants.jones, in_t({{-7, -1}, {-6, 1}, {-5, -1}, {-4, 1}, {-2, 1}})) << c.jones;
+  EXPECT_EQ(c.identification.invariants.jones, in_t({{-7, -1}, {-6, 1}, {-5, -1}, {-4, 1}, {-2, 1}}))
+      << c.jones;
   EXPECT_EQ(c.identification.invariants.alexander, in_t({{-2, 1}, {-1, -1}, {0, 1}, {1, -1}, {2, 1}}));
   EXPECT_EQ(c.determinant, 5);
 }
@@ -107,7 +108,8 @@ TEST(KnotInfo, ThirteenAndFourteenCrossingKnotsUseDTNamesWhenTheIndexHasThem) {
   int named = 0;
   for (const auto& e : idx.entries()) named += e.crossings >= 13 && !e.dt_name.empty();
   if (named == 0)
-    GTEST_SKIP() << "the shipped index has no DT names above 12 crossings (data/knots/README.md says how to add them)";
+    GTEST_SKIP()
+        << "the shipped index has no DT names above 12 crossings (data/knots/README.md says how to add them)";
   for (const auto& e : idx.entries())
     if (e.crossings == 13 && !e.dt_name.empty()) {
       EXPECT_EQ(knot_info(make_table_knot(e.dt_name)).name, e.dt_name);

@@ -70,8 +70,8 @@ TEST(KnotTable, CurvesOfCensusDiagramsKeepSignsAndKnot) {
 }
 
 TEST(KnotTable, TableKnotsAreNamedBackAsThemselvesWithTheirChirality) {
-  for (const char* name : {"3_1", "4_1", "5_1", "5_2", "6_1", "7_4", "8_19", "9_42", "10_132",
-                           "10_165", "11a_1", "11n_34", "12a_1", "12n_888", "13ah_1", "14nh_7499"}) {
+  for (const char* name : {"3_1", "4_1", "5_1", "5_2", "6_1", "7_4", "8_19", "9_42", "10_132", "10_165",
+                           "11a_1", "11n_34", "12a_1", "12n_888", "13ah_1", "14nh_7499"}) {
     expect_named_back(name, false);
     expect_named_back(name, true);
   }
