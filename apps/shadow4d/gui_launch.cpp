@@ -30,6 +30,9 @@ int launch_gui(const GuiLaunch& launch) {
   options.window_shot = launch.window_shot;
   options.device = launch.device;
   options.input = launch.input;
+  options.autosave = launch.autosave;
+  options.autosave_seconds = launch.autosave_seconds;
+  options.restore = launch.restore;
   options.width = launch.width;
   options.height = launch.height;
   return run_gui_app(options);

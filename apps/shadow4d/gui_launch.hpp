@@ -11,6 +11,9 @@ struct GuiLaunch {
   std::string window_shot;
   std::string device = "mouse";
   std::string input;
+  std::string autosave;
+  double autosave_seconds = 30;
+  bool restore = false;
   int width = 1280, height = 800;
 };
 // Returns the process exit code.

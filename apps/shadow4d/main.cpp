@@ -24,6 +24,11 @@ int main(int argc, char** argv) {
                  "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, open SPEC, "
                  "shot FILE, dump FILE, quit)")
       ->group("GUI scripting");
+  app.add_option("--autosave", gui.autosave,
+                 "GUI: the autosave file (default $XDG_STATE_HOME/shadow4d/autosave.s4d or ~/.local/state/...)");
+  app.add_option("--autosave-seconds", gui.autosave_seconds, "GUI: seconds between autosaves (0: none)")
+      ->check(CLI::Range(0.0, 1e6));
+  app.add_flag("--restore", gui.restore, "GUI: take up the autosave a crashed or killed run left, without asking");
   app.add_option(
       "--device", gui.device,
       "GUI: the haptic loop's device: mouse (default), sim, replay:FILE, spacenav, openhaptics");

@@ -19,6 +19,7 @@
 #include "app/panels.hpp"
 #include "interact/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
+#include "interact/autosave.hpp"
 #include "interact/live_simulation.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
@@ -337,6 +338,19 @@ int run_gui_app(const GuiOptions& options) {
       exit_code = 1;
     }
     if (model.session_options.device != "mouse") haptics.open() = true;
+    Autosaver autosaver({options.autosave, options.autosave_seconds, 3});
+    model.autosave_path = autosaver.path().string();
+    {
+      std::string why;
+      if (auto saved = unfinished_autosave(autosaver.path(), &why)) {
+        if (options.restore) Panels::open_session(model, *saved, autosaver.path().string());
+        else model.pending_restore = std::move(saved);
+      } else if (!why.empty()) {
+        model.status = why;
+      } else if (options.restore) {
+        model.status = "nothing to restore: the last run quit normally (" + autosaver.path().string() + ")";
+      }
+    }
     Routing routing;
     Frame<4> sent_frame;
     sent_frame.rotate(Plane{0, 1}, 1.0);  // anything but the scene's: the first frame is sent
@@ -415,11 +429,13 @@ int run_gui_app(const GuiOptions& options) {
         }
       }
       shots.clear();
+      if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
       for (const std::string& path : dumps) dump_state(model, path);
       dumps.clear();
       glfwSwapBuffers(window);
       if (last) break;
     }
+    if (!model.pending_restore && options.autosave_seconds > 0) autosaver.save_now(model.session, true);
     model.session.close();
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -11,6 +11,9 @@ struct GuiOptions {
   int width = 1280, height = 800;
   std::string device = "mouse";  // the haptic loop's device (--device)
   std::string input;             // an input file of timed events (see app/window_input.hpp)
+  std::string autosave;          // the autosave file; empty: interact/autosave's default
+  double autosave_seconds = 30;  // 0: no autosaves
+  bool restore = false;          // take up an unfinished run's autosave without asking
 };
 
 // Returns the process exit code; never throws (errors are shown in the window or printed).

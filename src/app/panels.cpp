@@ -17,7 +17,7 @@ namespace s4d {
 
 namespace {
 
-const std::vector<std::string> kOpenExtensions{".json", ".off", ".4off", ".noff", ".vect",
+const std::vector<std::string> kOpenExtensions{".json", ".s4d", ".off", ".4off", ".noff", ".vect",
                                                ".4vect", ".txt", ".xyz", ".curve"};
 constexpr const char* kIntegratorNames[] = {"symplectic-euler", "paper-euler"};
 
@@ -85,10 +85,23 @@ ViewFit fit_of(const Scene& scene) {
 
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
+    if (spec.size() > 4 && spec.ends_with(".s4d")) {
+      open_session(model, read_session(spec), spec);
+      return;
+    }
     open(model, load_document(spec));
   } catch (const std::exception& e) {
     model.error = e.what();
   }
+}
+
+void Panels::open_session(GuiModel& model, const SessionFile& saved, const std::string& path) {
+  model.session.open_saved(saved, path, model.session_options);
+  model.view.reset(model.scene());
+  model.fit = fit_of(model.scene());
+  model.status = "opened the session " + path + " (saved from '" + saved.opened + "')";
+  if (!model.session.physics_error().empty())
+    model.status += " (not simulated: " + model.session.physics_error() + ")";
 }
 
 void Panels::open(GuiModel& model, Document doc) {
@@ -126,6 +139,7 @@ Scene scene_to_save(GuiModel& model) {
 Panels::Panels()
     : open_browser_("Open scene, scenario, mesh or curve", kOpenExtensions, false),
       save_browser_("Save scene", {".json"}, true),
+      session_browser_("Save session", {".s4d"}, true),
       shot_browser_("Save screenshot", {".png"}, true),
       stroke_browser_("Save last sketch stroke", {".txt"}, true) {}
 
@@ -155,6 +169,10 @@ void Panels::menu_bar(GuiModel& model) {
     if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(S4D_SCENARIOS_DIR);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
+    if (ImGui::MenuItem("Save session...")) session_browser_.open(".");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("everything as it is now: shapes, the simulation's state, pins, the view\n"
+                        "(File > Open or shadow4d FILE.s4d takes it up again)");
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
     if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, model.knot.has_last_stroke()))
       stroke_browser_.open(".");
@@ -548,6 +566,28 @@ void Panels::history_panel(GuiModel& model) {
   ImGui::End();
 }
 
+// After a crash or a kill: the autosave the last run left, taken up or set aside.
+void Panels::restore_dialog(GuiModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("Restore your work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+  const SessionFile& f = *model.pending_restore;
+  const double ago = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() - f.saved_at;
+  ImGui::Text("The last run did not quit normally. Its autosave (from '%s', %.0f s ago) holds", f.opened.c_str(), ago);
+  ImGui::Text("%zu object(s) and %d step(s) of work.", f.scene.objects.size(), f.history_head);
+  if (ImGui::Button("Restore")) {
+    const SessionFile saved = *model.pending_restore;
+    model.pending_restore.reset();
+    open_session(model, saved, model.autosave_path);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Start afresh")) {
+    model.pending_restore.reset();
+    model.status = "the autosave stays in " + model.autosave_path + " until the next one";
+  }
+  ImGui::End();
+}
+
 // [SECTION] Generator dialog
 void Panels::generator_dialog(GuiModel& model) {
   if (!generator_dialog_open_) return;
@@ -604,6 +644,19 @@ void Panels::generator_dialog(GuiModel& model) {
 // [SECTION] Dialogs (open, save, screenshot, errors)
 void Panels::dialogs(GuiModel& model) {
   if (auto p = open_browser_.draw()) open(model, p->string());
+  if (auto p = session_browser_.draw()) {
+    try {
+      auto path = *p;
+      if (path.extension() != ".s4d") path += ".s4d";
+      SessionFile f = model.session.save_state();
+      f.tool = model.active_tool()->name();
+      write_session(f, path);
+      model.status = "saved the session " + path.string();
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  if (model.pending_restore) restore_dialog(model);
   if (auto p = save_browser_.draw()) {
     try {
       auto path = *p;

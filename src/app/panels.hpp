@@ -46,6 +46,8 @@ struct GuiModel {
   std::string screenshot_path = "shadow4d-screenshot.png";
   bool open_haptics = false;   // show the haptics panel
   bool show_history = false;   // Edit > History
+  std::optional<SessionFile> pending_restore;  // an unfinished run's autosave, offered at start
+  std::string autosave_path;
   // [tools]
   ToolChoice tool = ToolChoice::kTouch;
   GrabTool grab;
@@ -87,6 +89,8 @@ class Panels {
   static void open(GuiModel& model, const std::string& spec);
   // Takes a document already read (the window's start, a test).
   static void open(GuiModel& model, Document doc);
+  // Takes up a saved session (File > Open of a .s4d, the autosave after a crash).
+  static void open_session(GuiModel& model, const SessionFile& saved, const std::string& path);
 
  private:
   void menu_bar(GuiModel& model);
@@ -96,12 +100,14 @@ class Panels {
   void scenario_banner(GuiModel& model);
   void ribbon_panel(GuiModel& model);
   void history_panel(GuiModel& model);
+  void restore_dialog(GuiModel& model);
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);
 
   FileBrowser open_browser_;
   FileBrowser save_browser_;
+  FileBrowser session_browser_;
   FileBrowser shot_browser_;
   FileBrowser stroke_browser_;
   std::string generator_;      // generator whose dialog is open

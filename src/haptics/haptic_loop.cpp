@@ -240,6 +240,8 @@ void HapticLoop::publish() {
   const std::size_t n = static_cast<std::size_t>(scene_->point_count()) * s.point_dimension;
   if (s.points.size() != n) s.points.resize(n);  // allocates only when the scene's size changes
   scene_->copy_points(s.points);
+  if (s.velocities.size() != n) s.velocities.resize(n);
+  scene_->copy_velocities(s.velocities);
   const std::size_t nf = static_cast<std::size_t>(scene_->point_count());
   if (s.flags.size() != nf) s.flags.resize(nf);
   scene_->copy_flags(s.flags);

@@ -63,6 +63,7 @@ struct HapticSnapshot {
   int param_count = 0;
   std::vector<double> points;         // point_count x point_dimension, the scene's vertices
   int point_dimension = 3;
+  std::vector<double> velocities;     // point_count x point_dimension
   std::vector<std::uint8_t> flags;    // point_count, bit 0: pinned
   SceneStatus status;                 // the simulating scene's status
   std::uint64_t reconnects = 0;       // successful reconnections

@@ -99,6 +99,8 @@ class HapticScene {
   // Loop thread, when publishing: the scene's status and one flag byte per point (bit 0: pinned).
   virtual void copy_status(SceneStatus& out) const {}
   virtual void copy_flags(std::span<std::uint8_t> out) const {}
+  // Like copy_points, the vertices' velocities (zeros for scenes without them).
+  virtual void copy_velocities(std::span<double> out) const {}
 };
 
 }  // namespace s4d

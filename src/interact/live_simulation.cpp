@@ -257,7 +257,7 @@ class Core {
     script_.reset();
     hand_ = Hand<D>{};
     owed_ = 0;
-    playing_ = false;
+    playing_ = s.play;
   }
 
   // Adds dt of haptic time (s) to what the simulation owes; at most 0.1 s is owed (beyond it
@@ -582,6 +582,12 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
     const std::size_t n = std::min(x.size(), out.size() / D);
     for (std::size_t i = 0; i < n; ++i)
       for (int k = 0; k < D; ++k) out[i * D + k] = x[i][k];
+  }
+  void copy_velocities(std::span<double> out) const override {
+    const auto v = velocities();
+    const std::size_t n = std::min(v.size(), out.size() / D);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < D; ++k) out[i * D + k] = v[i][k];
   }
   void copy_flags(std::span<std::uint8_t> out) const override {
     const auto p = pinned();

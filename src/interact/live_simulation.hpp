@@ -71,10 +71,12 @@ enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kExpl
 struct CrossingTable;
 
 // A state to put the World in at once (an undo, a restored session): every vertex's position
-// and velocity (nv × D each, body order) and the pinned vertices. The simulation pauses there.
+// and velocity (nv × D each, body order) and the pinned vertices. The simulation pauses there
+// unless `play`.
 struct WorldState {
   std::vector<double> positions, velocities;
   std::vector<int> pinned;
+  bool play = false;  // go on playing from it (a restored session that was playing)
 };
 
 // What the UI hands a running live simulation directly (thread-safe, never blocking either side).

@@ -196,6 +196,50 @@ std::vector<SceneEvent> Session::take_events() {
   return out;
 }
 
+SessionFile Session::save_state() const {
+  SessionFile f;
+  f.scene = doc_.scene;
+  f.scene.view.fit_radius = 0;
+  f.opened = doc_.spec;
+  if (snapshot_) {
+    f.simulation.dim = snapshot_->point_dimension;
+    f.simulation.positions = snapshot_->points;
+    f.simulation.velocities = snapshot_->velocities;
+    for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
+      if (snapshot_->flags[v] & 1) f.simulation.pinned.push_back(static_cast<int>(v));
+    f.simulation.time = snapshot_->status.sim_time;
+    f.simulation.playing = snapshot_->status.playing;
+  }
+  // The view's rotation is in the scene's frame already (the window writes it in each frame).
+  f.view.base_frame = doc_.scene.frame;
+  f.view.trackball = doc_.scene.view.trackball;
+  f.view.zoom = doc_.scene.view.zoom;
+  f.history = history_.done_labels();
+  f.history_head = static_cast<int>(f.history.size());
+  for (const std::string& l : history_.undone_labels()) f.history.push_back(l);
+  f.saved_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  return f;
+}
+
+void Session::open_saved(const SessionFile& saved, const std::string& path, const SessionOptions& options) {
+  Document d;
+  d.scene = saved.scene;
+  d.spec = path;
+  if (is_scenario(d.scene)) d.scenario = scenario_of_scene(d.scene, path);
+  SessionOptions o = options;
+  o.start_playing = false;  // until the saved state is in place
+  open(std::move(d), o);
+  const SimulationState& sim = saved.simulation;
+  if (handover_ && sim.dim == dim_ && !sim.positions.empty()) {
+    auto w = std::make_unique<WorldState>();
+    w->positions = sim.positions;
+    w->velocities = sim.velocities;
+    w->pinned = sim.pinned;
+    w->play = sim.playing;
+    handover_->offer_state(std::move(w));
+  }
+}
+
 DocumentState Session::capture() const {
   DocumentState d;
   d.scene = doc_.scene;

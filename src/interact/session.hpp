@@ -14,6 +14,7 @@
 #include "interact/live_simulation.hpp"
 #include "interact/session_monitor.hpp"
 #include "io/scene.hpp"
+#include "io/session_file.hpp"
 #include "scenario/scenario.hpp"
 
 namespace s4d {
@@ -94,6 +95,12 @@ class Session {
   // The window's part of a state: its 4D rotation, trackball and zoom.
   std::function<void(DocumentState&)> capture_view;
   std::function<void(const DocumentState&)> restore_view;
+
+  // [sessions] The work as it is now (File > Save session, the autosave): the scene with its
+  // current shapes, the simulation's state from the last snapshot, the view, the history's labels.
+  SessionFile save_state() const;
+  // Opens a saved session: its document, then the World put in the saved state.
+  void open_saved(const SessionFile& saved, const std::string& path, const SessionOptions& options);
 
   // The device's workspace laid onto the view (sent to the simulation; the window refits it
   // when the view turns). Kept while a vertex is held, so the hand does not jump.

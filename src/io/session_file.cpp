@@ -55,6 +55,7 @@ std::string session_text(const SessionFile& s) {
   root["history"] = s.history;
   root["history_head"] = s.history_head;
   root["clean_exit"] = s.clean_exit;
+  root["saved_at"] = s.saved_at;
   try {
     return root.dump(1) + "\n";
   } catch (const Json::exception& e) {  // e.g. a name that is not UTF-8
@@ -78,7 +79,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (version < 1 || version != std::floor(version)) c.fail("shadow4d_session", "not a version number");
   for (const auto& [k, v] : root.items())
     if (k != "shadow4d_session" && k != "opened" && k != "scene" && k != "simulation" && k != "view" && k != "tool" &&
-        k != "history" && k != "history_head" && k != "clean_exit")
+        k != "history" && k != "history_head" && k != "clean_exit" && k != "saved_at")
       c.fail(k, "unknown key");
   SessionFile s;
   if (root.contains("opened")) {
@@ -143,6 +144,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   }
   s.history_head = static_cast<int>(c.number(root.value("history_head", Json(static_cast<double>(s.history.size()))), "history_head"));
   if (s.history_head < 0 || s.history_head > static_cast<int>(s.history.size())) c.fail("history_head", "is outside the history");
+  if (root.contains("saved_at")) s.saved_at = c.number(root["saved_at"], "saved_at");
   if (root.contains("clean_exit")) {
     if (!root["clean_exit"].is_boolean()) c.fail("clean_exit", "must be true or false");
     s.clean_exit = root["clean_exit"].get<bool>();

@@ -41,6 +41,7 @@ struct SessionFile {
   std::vector<std::string> history;  // labels of the undoable steps, oldest first
   int history_head = 0;            // how many of them are done (the rest were undone)
   bool clean_exit = true;          // an autosave says false until the app has quit normally
+  double saved_at = 0;             // s since 1970 (wall clock) when it was written
 };
 
 std::string session_text(const SessionFile& session);

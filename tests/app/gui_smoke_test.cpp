@@ -20,6 +20,8 @@ TEST(GuiSmoke, WindowShowsTheObjectAndThePanels) {
   const auto shot = std::filesystem::temp_directory_path() / "s4d_gui_smoke.png";
   std::filesystem::remove(shot);
   GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
   options.open_spec = "clifford-torus";
   options.frames = 10;
   options.window_shot = shot.string();
@@ -47,6 +49,8 @@ TEST(GuiSmoke, BadFileIsReportedNotFatal) {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
   GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
   options.open_spec = "/nonexistent/file.4off";
   options.frames = 3;
   EXPECT_EQ(run_gui_app(options), 1);  // the window still opened and closed cleanly
@@ -77,6 +81,8 @@ Dumped drag_the_spun_trefoil(const std::string& device, const std::filesystem::p
       << "150 dump " << (dir / "after.json").string() << "\n151 shot " << (dir / "after.png").string() << "\n152 quit\n";
   }
   GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
   options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json";
   options.input = input.string();
   options.device = device;
@@ -153,6 +159,8 @@ nlohmann::json run_script(const std::string& open, const std::vector<std::string
     f << "120 dump " << (dir / "state.json").string() << "\n121 shot " << (dir / "shot.png").string() << "\n122 quit\n";
   }
   GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
   options.open_spec = open;
   options.input = (dir / "script.txt").string();
   EXPECT_EQ(run_gui_app(options), 0);
