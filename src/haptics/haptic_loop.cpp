@@ -176,6 +176,7 @@ void HapticLoop::tick(bool deadline_missed) {
   DeviceState s;
   const bool was_connected = connected_;
   connected_ = device_->read(in, s) == DeviceStatus::ok;
+  if (connected_ && !was_connected) ++reconnects_;  // back, by reconnect() or by itself
   if (connected_ && s.position.allFinite() && s.velocity.allFinite()) {
     state_ = s;
   } else {
@@ -184,7 +185,7 @@ void HapticLoop::tick(bool deadline_missed) {
   }
   if (!connected_ && t >= next_reconnect_tick_) {
     next_reconnect_tick_ = t + static_cast<std::uint64_t>(std::max(1.0, config_.reconnect_interval / dt_));
-    if (device_->reconnect()) ++reconnects_;  // takes effect from the next read
+    device_->reconnect();  // takes effect from the next read
   }
 
   std::uint32_t events = (deadline_missed ? kEventDeadlineMissed : 0) | (reset ? kEventSceneReset : 0) |

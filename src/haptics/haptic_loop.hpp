@@ -66,7 +66,7 @@ struct HapticSnapshot {
   std::vector<double> velocities;     // point_count x point_dimension
   std::vector<std::uint8_t> flags;    // point_count, bit 0: pinned
   SceneStatus status;                 // the simulating scene's status
-  std::uint64_t reconnects = 0;       // successful reconnections
+  std::uint64_t reconnects = 0;       // times the device came back after it was gone
 };
 
 class HapticLoop {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "mesh_checks.hpp"
+#include "shape/mesh_checks.hpp"
 #include "shape/topology.hpp"
 
 namespace s4d {

@@ -1,5 +1,5 @@
 // Tests of the test-only checkers themselves: they must find intersections where they exist.
-#include "mesh_checks.hpp"
+#include "shape/mesh_checks.hpp"
 
 #include <gtest/gtest.h>
 

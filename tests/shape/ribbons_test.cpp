@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
-#include "mesh_checks.hpp"
+#include "shape/mesh_checks.hpp"
 #include "shape/knotted_arc.hpp"
 #include "shape/polyline_ops.hpp"
 #include "shape/shape.hpp"

@@ -1,5 +1,6 @@
-// Test-only geometry checks, written independently of src/: exact triangle-triangle distance
-// in R^D, a self-intersection sweep over a mesh, and crossings of a knot diagram.
+// Geometry checks written independently of the engine (they share no code with proximity/ or
+// physics/): exact triangle-triangle distance in R^D, a self-intersection sweep over a mesh, and
+// crossings of a knot diagram. The tests and `shadow4d soak` judge the engine with them.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -12,7 +13,7 @@
 #include "shape/curve.hpp"
 #include "shape/surface.hpp"
 
-namespace s4d::test {
+namespace s4d::independent {
 
 // Distance between triangles P and Q in R^D. The minimum of |x - y|^2 over P × Q (a convex
 // quadratic over a product of simplices) lies in the relative interior of some pair of faces
@@ -185,4 +186,8 @@ inline std::vector<Crossing> diagram_crossings(const Curve<3>& c) {
   return out;
 }
 
+}  // namespace s4d::independent
+
+namespace s4d::test {
+using namespace s4d::independent;  // the tests' name for it
 }  // namespace s4d::test
