@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/haptics_window.hpp"
+#include "app/knot_panels.hpp"
 #include "app/panels.hpp"
 #include "interact/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
@@ -88,7 +89,7 @@ struct Routing {
 };
 
 void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, const Vec2& window,
-                 const Camera& camera) {
+                 const Camera& camera, KnotPanels& knots) {
   const ImGuiIO& io = ImGui::GetIO();
   Session& session = model.session;
   Tool* tool = model.active_tool();
@@ -130,7 +131,9 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
     if (in.pressed(1)) {
       std::string message;
-      if (change_crossing_under(ti.view, session, message)) model.status = message;
+      const auto c = crossing_under(ti.view, model.scene());
+      const bool exercise = c && knots.exercise_crossing(model, c->object, c->over);
+      if (change_crossing_under(ti.view, session, message)) model.status = exercise ? knots.exercise_message() : message;
       else if (tool) tool->right_click(ti, session);
     }
     {
@@ -224,6 +227,7 @@ void dump_state(GuiModel& model, const std::string& path) {
     j["ribbon_passages"] = ps;
   }
   j["hits_under_cursor"] = model.grab.hits().size();
+  j["knot_panel_name"] = model.knot_panel_name;
   j["sheet"] = model.grab.sheet();
   std::ofstream out(path);
   out << j.dump(1) << "\n";
@@ -323,6 +327,7 @@ int run_gui_app(const GuiOptions& options) {
     Renderer renderer;
     Panels panels;
     HapticsWindow haptics;
+    KnotPanels knot_panels;
     GuiModel model;
     model.audio = std::make_unique<AudioPlayer>();
     model.session.capture_view = [&model](DocumentState& d) {
@@ -388,8 +393,13 @@ int run_gui_app(const GuiOptions& options) {
       ti.alt = input.alt();
       ti.time = glfwGetTime();
       sync_view(model, camera, sent_frame, sent_mapping);
-      route_input(model, routing, input, ti, win, camera);
+      route_input(model, routing, input, ti, win, camera, knot_panels);
       panels.draw(model, ImGui::GetIO().Framerate);
+      knot_panels.draw(model, Frame<3>(camera.orientation.normalized().toRotationMatrix()));
+      if (model.open_knot_table) {
+        model.open_knot_table = false;
+        knot_panels.open_table();
+      }
       if (model.open_haptics) {
         model.open_haptics = false;
         haptics.open() = true;
@@ -430,6 +440,7 @@ int run_gui_app(const GuiOptions& options) {
       }
       shots.clear();
       if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
+      model.knot_panel_name = knot_panels.shown_name();
       for (const std::string& path : dumps) dump_state(model, path);
       dumps.clear();
       glfwSwapBuffers(window);

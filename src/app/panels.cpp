@@ -215,6 +215,10 @@ void Panels::menu_bar(GuiModel& model) {
                         "where it crosses what is drawn it passes over, or under with shift held.\n"
                         "It becomes a knot of R^3, named live in the Scene panel.\n"
                         "(also: shadow4d knot sketch STROKE --knot --out KNOT)");
+    if (ImGui::MenuItem("Knot from the table...")) model.open_knot_table = true;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("3_1 ... 10_165, 11n_34, 12a_803, torus knots T(p,q), links; a relaxed 3D curve of it\n"
+                        "(also: shadow4d knot make NAME --out K.curve)");
     bool ribbon = model.tool == ToolChoice::kSketchRibbon;
     if (ImGui::MenuItem("Sketch a ribbon", "R", &ribbon)) model.choose(ribbon ? ToolChoice::kSketchRibbon : ToolChoice::kTouch);
     if (ImGui::IsItemHovered())

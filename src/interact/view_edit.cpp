@@ -112,10 +112,9 @@ Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const Sc
   throw Error("changing this crossing from this view would change others: turn the view a little");
 }
 
-bool change_crossing_under(const ToolView& view, Session& session, std::string& message) {
-  Scene& scene = session.scene();
+std::optional<ScreenCrossing> crossing_under(const ToolView& view, const Scene& scene) {
   const Camera& camera = view.camera;
-  const ScreenCrossing* best = nullptr;
+  std::optional<ScreenCrossing> best;
   double best_px = 14;  // pixels: about a dot's size
   const ScreenCrossings found = screen_crossings(scene, camera);
   for (const ScreenCrossing& c : found.crossings) {
@@ -123,9 +122,16 @@ bool change_crossing_under(const ToolView& view, Session& session, std::string& 
     const Vec2 px((at.x() + 1) / 2 * view.window.x(), (1 - at.y()) / 2 * view.window.y());
     if ((px - view.cursor).norm() < best_px) {
       best_px = (px - view.cursor).norm();
-      best = &c;
+      best = c;
     }
   }
+  return best;
+}
+
+bool change_crossing_under(const ToolView& view, Session& session, std::string& message) {
+  Scene& scene = session.scene();
+  const Camera& camera = view.camera;
+  const std::optional<ScreenCrossing> best = crossing_under(view, scene);
   if (!best) return false;
   try {
     Shape changed = change_crossing_in_view(scene, camera, *best, 2.5 * scene.view.tube_radius);

@@ -6,6 +6,8 @@
 #include "interact/view_crossings.hpp"
 #include "io/scene.hpp"
 
+#include <optional>
+
 namespace s4d {
 
 class Session;
@@ -19,6 +21,9 @@ class Session;
 // eye, or no bump changes that crossing alone.
 Shape change_crossing_in_view(const Scene& scene, const Camera& camera, const ScreenCrossing& c,
                               double clearance);
+
+// The crossing whose dot lies within 14 pixels of the cursor, if any.
+std::optional<ScreenCrossing> crossing_under(const ToolView& view, const Scene& scene);
 
 // The crossing change of the window's right click: the crossing whose dot lies within 14 pixels
 // of the cursor, changed in scene's curve; false when no dot is there. What happened (or why it

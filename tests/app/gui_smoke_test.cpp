@@ -247,3 +247,18 @@ TEST(GuiSmoke, CtrlZUndoesADragAndCtrlShiftZRedoesIt) {
 
 }  // namespace
 }  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// The Knot panel names the scene's curve live, off the UI thread, as knot info does.
+TEST(GuiSmoke, TheKnotPanelNamesTheTrefoil) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto d = run_script(std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json", {"3 move 100 700"},
+                            std::filesystem::temp_directory_path() / "s4d_gui_knot_panel");
+  EXPECT_EQ(d["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d["knot_panel_name"];
+}
+
+}  // namespace
+}  // namespace s4d
