@@ -14,6 +14,10 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
   app.add_option("--orbit", orbit, "camera yaw,pitch in degrees, e.g. 30,20");
   app.add_option("--colour-map", colour_map, "depth colour map: coolwarm, rainbow or grey");
   app.add_flag("--no-depth-colour", no_depth_colour, "plain colour instead of depth colouring");
+  app.add_option("--mode", curve_mode,
+                 "how curves are drawn: tubes (lit, the default), shadow (their flat image, no 3D "
+                 "cues) or diagram (the crossing diagram: flat, a gap in the under strand at each "
+                 "crossing)");
   app.add_flag("--wireframe", wireframe, "draw triangle edges");
   app.add_flag("--shadow", shadow, "flat-shaded shadow drawing (no lighting)");
   app.add_flag("--intersections", intersections,
@@ -53,6 +57,11 @@ void ViewOptions::apply(Scene& scene) const {
     const auto map = parse_colour_map(colour_map);
     if (!map) throw Error("--colour-map '" + colour_map + "': use coolwarm, rainbow or grey");
     scene.view.colour_map = *map;
+  }
+  if (!curve_mode.empty()) {
+    const auto mode = parse_curve_mode(curve_mode);
+    if (!mode) throw Error("--mode '" + curve_mode + "': use tubes, shadow or diagram");
+    scene.view.curve_mode = *mode;
   }
   if (no_depth_colour) scene.view.depth_colour = false;
   if (wireframe) scene.view.wireframe = true;

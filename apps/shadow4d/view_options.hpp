@@ -14,6 +14,7 @@ struct ViewOptions {
   std::string rotate;      // 4D (or 3D) plane rotations, "xw=30,yz=10", degrees, applied in order
   std::string orbit;       // camera yaw,pitch in degrees
   std::string colour_map;  // coolwarm | rainbow | grey
+  std::string curve_mode;  // tubes | shadow | diagram (view.curve_mode)
   bool no_depth_colour = false;
   bool wireframe = false;
   bool shadow = false;

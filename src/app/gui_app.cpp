@@ -117,6 +117,11 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       if (in.key_pressed(GLFW_KEY_R)) model.choose(ToolChoice::kSketchRibbon);
       if (in.key_pressed(GLFW_KEY_K)) model.choose(ToolChoice::kSketchKnot);
     }
+    if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
+      CurveMode& mode = model.scene().view.curve_mode;
+      mode = mode == CurveMode::kTubes ? CurveMode::kShadow : mode == CurveMode::kShadow ? CurveMode::kDiagram : CurveMode::kTubes;
+      model.status = std::string("curves drawn as: ") + curve_mode_name(mode);
+    }
     tool = model.active_tool();
     if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
     if (tool && in.key_pressed(GLFW_KEY_P)) tool->key(ToolKey::kPin, ti, session);
@@ -228,6 +233,7 @@ void dump_state(GuiModel& model, const std::string& path) {
   }
   j["hits_under_cursor"] = model.grab.hits().size();
   j["knot_panel_name"] = model.knot_panel_name;
+  j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
   j["sheet"] = model.grab.sheet();
   std::ofstream out(path);
   out << j.dump(1) << "\n";

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "interact/live_simulation.hpp"
 #include "io/object_file.hpp"
+#include "render/diagram_export.hpp"
 #include "shape/describe.hpp"
 
 namespace s4d {
@@ -141,7 +142,8 @@ Panels::Panels()
       save_browser_("Save scene", {".json"}, true),
       session_browser_("Save session", {".s4d"}, true),
       shot_browser_("Save screenshot", {".png"}, true),
-      stroke_browser_("Save last sketch stroke", {".txt"}, true) {}
+      stroke_browser_("Save last sketch stroke", {".txt"}, true),
+      diagram_browser_("Export the crossing diagram (.svg, or .tex for TikZ)", {".svg", ".tex"}, true) {}
 
 void Panels::draw(GuiModel& model, float fps) {
   menu_bar(model);
@@ -176,6 +178,8 @@ void Panels::menu_bar(GuiModel& model) {
     if (ImGui::MenuItem("Screenshot...", "F12")) shot_browser_.open(".");
     if (ImGui::MenuItem("Save last sketch stroke...", nullptr, false, model.knot.has_last_stroke()))
       stroke_browser_.open(".");
+    if (ImGui::MenuItem("Export crossing diagram (SVG, TikZ)...", nullptr, false, has_curves(model.scene())))
+      diagram_browser_.open(".");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("the cursor samples of the last sketch (x y u), for\n"
                         "shadow4d knot sketch FILE --knot --out KNOT");
@@ -288,6 +292,21 @@ void Panels::view_panel(GuiModel& model, float fps) {
     ImGui::Combo("colour map", &map, "coolwarm\0rainbow\0grey\0");
     v.colour_map = static_cast<ColourMap>(map);
     legend(v.colour_map, model.scene());
+  }
+  if (has_curves(model.scene())) {
+    int mode = static_cast<int>(v.curve_mode);
+    ImGui::TextUnformatted("curves:");
+    ImGui::SameLine();
+    ImGui::RadioButton("tubes", &mode, static_cast<int>(CurveMode::kTubes));
+    ImGui::SameLine();
+    ImGui::RadioButton("shadow", &mode, static_cast<int>(CurveMode::kShadow));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the plain image: no 3D cues at all");
+    ImGui::SameLine();
+    ImGui::RadioButton("diagram", &mode, static_cast<int>(CurveMode::kDiagram));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the crossing diagram: a gap in the under strand at each crossing");
+    v.curve_mode = static_cast<CurveMode>(mode);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(M)");
   }
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();
@@ -676,6 +695,15 @@ void Panels::dialogs(GuiModel& model) {
       const auto path = p->extension() == ".txt" ? *p : std::filesystem::path(p->string() + ".txt");
       write_shape_file(model.knot.last_stroke_curve(), path);
       model.status = "saved " + path.string() + " (shadow4d knot sketch " + path.filename().string() + " --knot)";
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  if (auto p = diagram_browser_.draw()) {
+    try {
+      const ImVec2 size = ImGui::GetIO().DisplaySize;
+      const std::string written = export_diagram(scene_to_save(model), *p, static_cast<int>(size.x), static_cast<int>(size.y));
+      model.status = "wrote the crossing diagram of this view to " + written;
     } catch (const std::exception& e) {
       model.error = e.what();
     }

@@ -112,6 +112,7 @@ class Panels {
   FileBrowser session_browser_;
   FileBrowser shot_browser_;
   FileBrowser stroke_browser_;
+  FileBrowser diagram_browser_;
   std::string generator_;      // generator whose dialog is open
   Params generator_params_;
   bool generator_dialog_open_ = false;

@@ -1,6 +1,7 @@
 // Renderer: uploads the frame's SceneGeometry and draws it with one GLSL program in three modes
-// (lit, flat shadow, solid wireframe colour), opaque things first and see-through surfaces sorted
-// back to front after them, plus render_offscreen for the CLI and tests.
+// (lit, flat shadow, solid wireframe colour), opaque things first, then the flat strands of the
+// curve modes, and see-through surfaces sorted back to front after them, plus render_offscreen for
+// the CLI and tests.
 //
 // [SECTION] shaders
 // [SECTION] gpu meshes
@@ -291,12 +292,45 @@ void Renderer::draw(const Scene& scene, int width, int height) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
+  auto object = [&](std::size_t i) -> const DrawObject& {
+    return i < geometry.objects.size() ? geometry.objects[i] : geometry.overlays[i - geometry.objects.size()];
+  };
+  bool any_screen = false;
   for (std::size_t i = 0; i < count; ++i) {
     if (is_blended[i]) continue;
-    const bool lit = i < geometry.objects.size() || geometry.overlays[i - geometry.objects.size()].lit;
+    if (object(i).screen) {
+      any_screen = true;
+      continue;
+    }
+    const bool lit = object(i).lit;
     if (!lit && !scene.view.shadow) glUniform1i(r.u_mode, 1);
     r.meshes[i]->draw();
     if (!lit && !scene.view.shadow) glUniform1i(r.u_mode, 0);
+  }
+
+  // Pass 1b: the flat strands of the shadow and diagram curve modes, given in normalised device
+  // coordinates, unlit. The plain shadow shows no depth: its strands are painted in order, not
+  // depth-tested against each other (a link's nearer component would show on top), and then
+  // write their depth so that see-through surfaces behind them stay behind.
+  if (any_screen) {
+    const Eigen::Matrix4f identity = Eigen::Matrix4f::Identity();
+    glUniformMatrix4fv(r.u_view, 1, GL_FALSE, identity.data());
+    glUniformMatrix4fv(r.u_projection, 1, GL_FALSE, identity.data());
+    glUniform1i(r.u_mode, 1);
+    const bool painted = scene.view.curve_mode == CurveMode::kShadow;
+    if (painted) glDepthMask(GL_FALSE);
+    for (std::size_t i = 0; i < count; ++i)
+      if (object(i).screen) r.meshes[i]->draw();
+    if (painted) {
+      glDepthMask(GL_TRUE);
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      for (std::size_t i = 0; i < count; ++i)
+        if (object(i).screen) r.meshes[i]->draw();
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
+    glUniformMatrix4fv(r.u_view, 1, GL_FALSE, view.data());
+    glUniformMatrix4fv(r.u_projection, 1, GL_FALSE, projection.data());
+    glUniform1i(r.u_mode, scene.view.shadow ? 1 : 0);
   }
 
   // Pass 2: the see-through surfaces, far to near, blended over what is behind them.

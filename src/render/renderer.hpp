@@ -1,7 +1,8 @@
 // Renderer: draws a Scene with OpenGL 3.3 core into the current framebuffer. R^4 objects are
 // projected by the scene's Frame<4> to R^3 and coloured by 4D depth; R^3 objects are drawn as they
-// are, coloured by view depth. Curves become lit tubes; surfaces are lit two-sided, see-through
-// when view.opacity < 1.
+// are, coloured by view depth. Curves become lit tubes, or flat strands (view.curve_mode: the plain
+// shadow, the crossing diagram with its gaps); surfaces are lit two-sided, see-through when
+// view.opacity < 1.
 #pragma once
 #include <cstddef>
 #include <memory>

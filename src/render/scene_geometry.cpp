@@ -27,8 +27,10 @@ struct Built {
   int dim = 4;
 };
 
+// A curve as a tube, or (`tube` false: the flat curve modes, whose strands need the camera) only
+// its points.
 Built build_curve(const std::vector<std::vector<Vec3>>& comps, const std::vector<bool>& closed,
-                  std::vector<double> w, double radius, int dim) {
+                  std::vector<double> w, double radius, int dim, bool tube) {
   Built b;
   b.surface = false;
   b.dim = dim;
@@ -38,13 +40,13 @@ Built build_curve(const std::vector<std::vector<Vec3>>& comps, const std::vector
   opt.sides = kTubeSides;
   for (std::size_t c = 0; c < comps.size(); ++c) {
     const int first = static_cast<int>(b.anchors.size());
-    append_mesh(b.mesh, tube_mesh(comps[c], closed[c], opt, first), 0);
+    if (tube) append_mesh(b.mesh, tube_mesh(comps[c], closed[c], opt, first), 0);
     b.anchors.insert(b.anchors.end(), comps[c].begin(), comps[c].end());
   }
   return b;
 }
 
-Built build_object(const Shape& shape, const Frame<4>& frame, double radius) {
+Built build_object(const Shape& shape, const Frame<4>& frame, double radius, bool tube) {
   return std::visit(
       [&](const auto& s) -> Built {
         using T = std::decay_t<decltype(s)>;
@@ -80,10 +82,40 @@ Built build_object(const Shape& shape, const Frame<4>& frame, double radius) {
             comps.push_back(std::move(pts));
             closed.push_back(poly.closed);
           }
-          return build_curve(comps, closed, std::move(w), radius, T::kDim);
+          return build_curve(comps, closed, std::move(w), radius, T::kDim, tube);
         }
       },
       shape);
+}
+
+// The ball that frames `points` and tubes of `radius` around `centreline`: bounding_sphere's box
+// centre and farthest point, a centreline point counting as its tube's farthest, `radius` beyond
+// it. Within a few hundredths of the radius of the tube mesh's own sphere (its rings are polygons
+// inside the round tube): the flat curve modes frame the view with it instead of building tubes
+// they do not draw, and the picture does not visibly move when the mode changes.
+BoundingSphere framing_sphere(const std::vector<Vec3>& points, const std::vector<Vec3>& centreline, double radius) {
+  if (centreline.empty()) return bounding_sphere(points);
+  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
+  for (const Vec3& p : points)
+    if (p.allFinite()) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  for (const Vec3& p : centreline)
+    if (p.allFinite()) {
+      lo = lo.cwiseMin(p - Vec3::Constant(radius));
+      hi = hi.cwiseMax(p + Vec3::Constant(radius));
+    }
+  BoundingSphere s;
+  if (!(lo.x() <= hi.x())) return s;
+  s.centre = 0.5 * (lo + hi);
+  double r = 0;
+  for (const Vec3& p : points)
+    if (p.allFinite()) r = std::max(r, (p - s.centre).norm());
+  for (const Vec3& p : centreline)
+    if (p.allFinite()) r = std::max(r, (p - s.centre).norm() + radius);
+  s.radius = r;
+  return s;
 }
 
 void extend(DepthRange& r, double d) {
@@ -405,12 +437,14 @@ std::string gauss_code_line(const Scene& scene, const ScreenImage& im) {
 
 // For each crossing of the curves' image, a dot on the near side of the over strand's tube
 // (radius `tube`), facing the eye, added to `d` (the overlay); the crossings and each curve's
-// Gauss code in this view go to `sum`.
+// Gauss code in this view go to `sum`. `known`: the crossings of this camera when already found.
 void add_crossings(const Scene& scene, const Camera& camera, double tube, DrawObject& d,
-                        IntersectionSummary& sum) {
+                   IntersectionSummary& sum, const ScreenCrossings* known) {
   for (const SceneObject& obj : scene.objects) sum.curve_objects += !is_surface(obj.shape);
   if (sum.curve_objects == 0) return;
-  const ScreenCrossings screen = screen_crossings(scene, camera);
+  ScreenCrossings found_here;
+  if (!known) found_here = screen_crossings(scene, camera);
+  const ScreenCrossings& screen = known ? *known : found_here;
   const std::vector<ScreenCrossing>& found = screen.crossings;
   sum.crossings = static_cast<int>(found.size());
   sum.crossing_non_generic = screen.non_generic;
@@ -485,15 +519,28 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
 
   std::vector<Built> built;
   built.reserve(scene.objects.size());
-  std::vector<Vec3> all_points;
+  const bool tubes = view.curve_mode == CurveMode::kTubes;
+  std::vector<Vec3> all_points, centrelines;  // centrelines: of the curves not drawn as tubes
   for (const SceneObject& obj : scene.objects) {
-    built.push_back(build_object(obj.shape, scene.frame, radius));
+    built.push_back(build_object(obj.shape, scene.frame, radius, tubes));
     const auto& pos = built.back().mesh.positions;
     all_points.insert(all_points.end(), pos.begin(), pos.end());
+    if (!tubes && !built.back().surface)
+      centrelines.insert(centrelines.end(), built.back().anchors.begin(), built.back().anchors.end());
   }
-  g.bounds = bounding_sphere(all_points);
+  g.bounds = framing_sphere(all_points, centrelines, radius);
   const BoundingSphere framed = view.fit_radius > 0 ? BoundingSphere{view.fit_centre, view.fit_radius} : g.bounds;
   g.camera = make_camera(framed, view.trackball, view.distance, view.fov_deg, aspect, view.zoom);
+
+  // The flat curve modes draw each curve's strands where the tube would be, recomputed from the
+  // camera every frame.
+  if (!tubes) {
+    const double half_width = strand_half_width(g.camera, radius);
+    g.diagram = curve_diagram(scene, g.camera, half_width, view.curve_mode == CurveMode::kDiagram);
+    for (const DiagramStrand& s : g.diagram.strands)
+      append_mesh(built[static_cast<std::size_t>(s.object)].mesh,
+                  strand_strip_mesh(s, half_width, g.camera.aspect, g.camera), 0);
+  }
 
   // Depth per anchor: w for R^4 objects; for R^3 ones the distance in front of the camera.
   std::vector<std::vector<double>> anchor_depth(built.size());
@@ -517,6 +564,8 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     DrawObject d;
     d.surface = built[i].surface;
     d.dim = built[i].dim;
+    d.screen = !d.surface && view.curve_mode != CurveMode::kTubes;
+    d.lit = !d.screen;
     d.mesh = std::move(built[i].mesh);
     const std::size_t nv = d.mesh.vertex_count();
     d.depth.resize(nv);
@@ -541,7 +590,8 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
   if (view.intersections) {
     // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
     g.overlays = intersection_overlays(scene, 0.5 * radius, g.intersections);
-    add_crossings(scene, g.camera, radius, g.overlays.front(), g.intersections);
+    add_crossings(scene, g.camera, radius, g.overlays.front(), g.intersections,
+                  view.curve_mode != CurveMode::kTubes ? &g.diagram.screen : nullptr);
     if (g.intersections.surfaces == 0) g.overlays.pop_back();  // no marks without surfaces
   }
   return g;

@@ -9,6 +9,7 @@
 #include "proximity/shadow_intersections.hpp"
 #include "core/camera.hpp"
 #include "interact/view_crossings.hpp"
+#include "render/curve_diagram.hpp"
 #include "render/geometry.hpp"
 
 namespace s4d {
@@ -22,6 +23,9 @@ struct DrawObject {
   std::vector<double> depth;   // nv, the depth that chose the colour (w for R^4, view depth for R^3)
   bool surface = true;         // surfaces get the wireframe overlay; tubes do not
   bool lit = true;             // false: drawn in its colours as they are (the above-below marks)
+  // The flat strands of a curve in the shadow and diagram modes: positions are normalised device
+  // coordinates (curve_diagram's strips), drawn unlit without the camera's matrices.
+  bool screen = false;
   int dim = 4;                 // ambient dimension of the source object
 };
 
@@ -82,7 +86,9 @@ struct SceneGeometry {
   // above-below marks, unlit.
   std::vector<DrawObject> overlays;
   IntersectionSummary intersections;
-  BoundingSphere bounds;            // of every drawn vertex
+  // The strands the flat curve modes draw (view.curve_mode shadow or diagram; empty for tubes).
+  CurveDiagram diagram;
+  BoundingSphere bounds;            // of every drawn vertex (for flat curves, of their tubes)
   Camera camera;
   // w over all R^4 objects together, so colours compare across objects; view depth over all R^3
   // objects together. Empty (hi < lo) when the scene has no object of that dimension.
@@ -91,7 +97,9 @@ struct SceneGeometry {
 };
 
 // Projects R^4 objects with scene.frame (shadow = first three view coordinates), keeps R^3
-// objects as they are, turns curves into tubes of radius view.tube_radius, fits the camera
+// objects as they are, turns curves into tubes of radius view.tube_radius (or, in the shadow and
+// diagram curve modes, into flat strands as wide on the screen, with gaps for the diagram, each
+// strand vertex's source its nearest curve point: see curve_diagram.hpp), fits the camera
 // (aspect = width / height), and colours vertices: blue = far, red = near, by w for R^4 objects
 // and by distance from the camera for R^3 ones. With depth colour off, each object gets its own
 // colour or a neutral grey. With view.intersections, adds the intersection curves of the R^4

@@ -260,5 +260,16 @@ TEST(GuiSmoke, TheKnotPanelNamesTheTrefoil) {
   EXPECT_EQ(d["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d["knot_panel_name"];
 }
 
+// M cycles the curve display modes of Fig. 1 (tubes, the plain shadow, the crossing diagram).
+TEST(GuiSmoke, MCyclesTheCurveDisplayModes) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_curve_modes";
+  const std::string trefoil = std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json";
+  EXPECT_EQ(run_script(trefoil, {"3 key M"}, dir / "one")["curve_mode"], "shadow");
+  EXPECT_EQ(run_script(trefoil, {"3 key M", "5 key M"}, dir / "two")["curve_mode"], "diagram");
+  EXPECT_EQ(run_script(trefoil, {"3 key M", "5 key M", "7 key M"}, dir / "three")["curve_mode"], "tubes");
+}
+
 }  // namespace
 }  // namespace s4d
