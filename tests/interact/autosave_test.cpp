@@ -9,6 +9,7 @@
 
 #include <fcntl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <cstdlib>
@@ -96,6 +97,14 @@ TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
   EXPECT_NE(why.find("cannot be read"), std::string::npos);
 }
 
+// True when the last minute's load average is over 1.5 runnable threads per core.
+bool machine_overloaded() {
+  std::ifstream in("/proc/loadavg");
+  double load = 0;
+  if (!(in >> load)) return false;
+  return load > 1.5 * std::max(1u, std::thread::hardware_concurrency());
+}
+
 // Needs the shadow4d binary: ctest passes it as S4D_BIN (tests/CMakeLists.txt).
 TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterval) {
   const char* bin = std::getenv("S4D_BIN");
@@ -137,8 +146,11 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
     EXPECT_FALSE(f.clean_exit);
     // Nothing older than the interval is lost (plus the start-up before the first save, and the
     // write itself, for which a quarter of a second is allowed).
+    // On a machine loaded far beyond its cores the saver itself waits for the CPU (a starved
+    // process loses no work it has not done), so the allowance grows with the measured load.
     const double age = killed_at - f.saved_at;
-    if (restored > 0) EXPECT_LT(age, kInterval + 0.25) << "run " << k;
+    const double allowance = machine_overloaded() ? 1.0 : 0.25;
+    if (restored > 0) EXPECT_LT(age, kInterval + allowance) << "run " << k;
     EXPECT_GE(age, -0.05);
     ++restored;
   }
