@@ -2,6 +2,9 @@
 // exploration headless. A scripted hand (or a recorded trajectory) drags the probe over the surface's
 // 3D shadow through the real haptic loop; the command prints each intersection curve the probe passed
 // (above / below in w), whether it stayed on its sheet, and writes the events (CSV) and cues (WAV).
+// For a knot (a scene of curves) the probe walks the curve's image in the view, through every
+// crossing along its own strand (4.3.1), and the Gauss code is built up from the crossings passed
+// (4.3.2); with no hand given, the hand traces the knot once round.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -18,10 +21,13 @@
 #include "haptics/haptic_loop.hpp"
 #include "haptics/replay_device.hpp"
 #include "haptics/simulated_arm.hpp"
+#include "interact/curve_explorer_scene.hpp"
 #include "interact/surface_explorer_path.hpp"
 #include "interact/surface_explorer_scene.hpp"
 #include "interact/surface_explorer_sound.hpp"
 #include "io/scene.hpp"
+#include "knot_input.hpp"
+#include "knots/knot_diagram.hpp"
 
 namespace s4d::cli {
 namespace {
@@ -34,6 +40,7 @@ struct ExploreArgs {
   double seconds = 0;  // 0: the path at 5 cm/s of hand motion, or the whole recording
   std::string events;
   std::string wav;
+  bool depth_tone = false;
 };
 
 constexpr double kHandSpeed = 0.05;  // m/s, the scripted hand's default pace
@@ -70,7 +77,147 @@ void write_events_csv(const std::string& path, const std::vector<ExplorerEvent>&
   if (!f) throw Error("writing " + path + " failed");
 }
 
+// The device for a scripted hand along `path` (shadow space) taking `seconds`, or a recording.
+struct Hand {
+  std::unique_ptr<Device> device;
+  std::optional<PolylinePath> path;
+  double rate = 1000;
+  std::uint64_t ticks = 0;
+};
+
+Hand open_hand(const ExploreArgs& a) {
+  Hand h;
+  if (!a.through.empty()) {
+    h.path.emplace(parse_point_list(a.through, "--through"));
+    h.device = std::make_unique<SimulatedArm>();
+    return h;
+  }
+  if (a.device.empty()) {
+    h.device = std::make_unique<SimulatedArm>();
+    return h;
+  }
+  const DeviceSpec spec = parse_device_spec(a.device);
+  if (spec.kind != DeviceSpec::Kind::replay)
+    throw Error("explore: --device takes replay:FILE (a recorded or generated trajectory); live devices "
+                "explore in the window");
+  h.device = make_device(spec);
+  const Trajectory& tr = static_cast<ReplayDevice&>(*h.device).trajectory();
+  if (tr.ticks.empty()) throw Error(spec.file + " holds no ticks");
+  h.rate = tr.header.rate;
+  h.ticks = tr.ticks.size();
+  if (a.seconds > 0) h.ticks = std::min<std::uint64_t>(h.ticks, std::uint64_t(std::llround(a.seconds * h.rate)));
+  return h;
+}
+
+// Starts the scripted hand at the path's start; returns that start (shadow space).
+Vec3 script_hand(Hand& h, const DeviceMapping& mapping, double seconds) {
+  auto& arm = static_cast<SimulatedArm&>(*h.device);
+  h.ticks = static_cast<std::uint64_t>(std::llround(seconds * h.rate));
+  arm.set_position(mapping.to_device(h.path->points().front()));
+  arm.set_hand_script([p = *h.path, mapping, seconds](double t) { return mapping.to_device(p.at_time(t, seconds)); });
+  return h.path->points().front();
+}
+
+void run_curve(const ExploreArgs& a, const std::string& input) {
+  const Curve<3> curve = load_knot_curve(input);
+  const Frame<3> view = parse_view(a.rotate);
+  Hand hand = open_hand(a);
+  // The image's box in the view's axes, fitted into the device's workspace with the same axes, so
+  // the hand's right/up move along the image's x/y.
+  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = -lo;
+  for (const auto& comp : curve.components)
+    for (const Vec3& p : comp.points) {
+      lo = lo.cwiseMin(view.to_view(p));
+      hi = hi.cwiseMax(view.to_view(p));
+    }
+  const DeviceCapabilities caps = hand.device->capabilities();
+  const Vec3 half = 0.5 * (caps.workspace_max - caps.workspace_min);
+  const DeviceMapping mapping = DeviceMapping::fit(view.matrix() * (0.5 * (lo + hi)), 0.5 * (hi - lo).maxCoeff(),
+                                                   view.matrix(), caps.workspace_centre(), 0.9 * half);
+  auto scene = std::make_unique<CurveExplorerScene>(curve, view, mapping);
+  CurveExplorerScene& ex = *scene;
+  Vec3 start;
+  if (hand.path || a.device.empty()) {
+    if (!hand.path) {  // trace the first component once round, starting at its first point
+      std::vector<Vec3> pts = curve.components[0].points;
+      if (curve.components[0].closed) pts.push_back(pts.front());
+      hand.path.emplace(std::move(pts));
+    }
+    const double seconds =
+        a.seconds > 0 ? a.seconds : std::max(1.0, hand.path->length() * mapping.metres_per_unit / kHandSpeed);
+    start = script_hand(hand, mapping, seconds);
+  } else {
+    start = mapping.to_shadow(static_cast<ReplayDevice&>(*hand.device).trajectory().ticks.front().state().position);
+  }
+  if (!ex.place(start)) throw Error("explore: cannot put the probe on " + input + " (is the curve finite?)");
+  const int crossings = ex.navigation().explorer().crossing_count();
+  std::printf("explore: %s (%zu component(s)), %d crossing(s) in this view; probe starts on component %d\n",
+              input.c_str(), curve.components.size(), crossings, ex.navigation().explorer().probe().component);
+  std::string code;
+  try {
+    code = diagram_from_curve(curve, view).gauss_code();
+  } catch (const std::exception&) {  // an open curve or a touching one: no diagram to compare with
+  }
+  HapticLoopConfig cfg;
+  cfg.rate_hz = hand.rate;
+  cfg.realtime_priority = false;
+  HapticLoop loop(std::move(hand.device), std::move(scene), cfg);
+  std::vector<CueEvent> cues;
+  std::vector<DepthSample> depth;
+  std::ofstream csv;
+  if (!a.events.empty()) {
+    csv.open(a.events);
+    if (!csv) throw Error("cannot write " + a.events);
+    csv << "time,crossing,strand,x,y\n";
+  }
+  const double dmin = lo.z(), drange = std::max(1e-12, hi.z() - lo.z());
+  int over = 0, under = 0;
+  for (std::uint64_t i = 0; i < hand.ticks; ++i) {
+    loop.run_ticks(1);
+    while (auto e = ex.pop_event()) {
+      (e->over ? over : under)++;
+      std::printf("  %8.4f s  crossing %d  %s\n", e->time, e->label, e->over ? "over" : "under");
+      cues.push_back({e->time, e->over ? CueKind::crossing_over : CueKind::crossing_under, 1.0f});
+      if (csv) csv << e->time << "," << e->label << "," << (e->over ? "over" : "under") << "," << e->point[0] << ","
+                   << e->point[1] << "\n";
+    }
+    if (a.depth_tone && i % 10 == 0)
+      depth.push_back({ex.stats().time, (ex.navigation().explorer().probe_depth() - dmin) / drange});
+  }
+  const CurveExploreStats& st = ex.stats();
+  const HapticSnapshot& snap = loop.snapshot();
+  std::printf("summary: %d crossing(s) passed: %d over, %d under; stayed on its strand: %s; probe within %.4g of "
+              "the hand (largest distance in the image, scene units)\n",
+              over + under, over, under, st.left_component ? "NO" : "yes", st.max_distance);
+  std::printf("  Gauss code of the passes: %s\n", ex.navigation().explorer().gauss_text().c_str());
+  if (!code.empty())
+    std::printf("  the knot's Gauss code in this view: %s (%s)\n", code.c_str(),
+                code == ex.navigation().explorer().gauss_text() ? "the passes spell it exactly"
+                                                                : "the passes so far are not one whole round of it");
+  std::printf("  force: max %.3f N; safety %s (clamped %llu, non-finite %llu)\n", snap.max_force_output,
+              safety_phase_name(snap.safety_phase), static_cast<unsigned long long>(snap.safety.clamped),
+              static_cast<unsigned long long>(snap.safety.nonfinite));
+  if (!a.events.empty()) std::printf("  events -> %s\n", a.events.c_str());
+  if (!a.wav.empty()) {
+    SynthSettings synth;
+    synth.depth_tone = a.depth_tone;
+    write_wav(a.wav, render_cues(cues, depth, st.time, synth), kAudioSampleRate);
+    std::printf("  cues -> %s (%.2f s, %zu cue(s)%s)\n", a.wav.c_str(), st.time, cues.size(),
+                a.depth_tone ? ", with the depth tone" : "");
+  }
+}
+
 void run(const ExploreArgs& a) {
+  {
+    const Scene probe_scene = load_scene_or_object(a.input);
+    const bool any_surface = std::any_of(probe_scene.objects.begin(), probe_scene.objects.end(),
+                                         [](const SceneObject& o) { return is_surface(o.shape); });
+    if (!any_surface && !probe_scene.objects.empty()) {
+      if (!(a.seconds >= 0) || a.seconds > 3600) throw Error("--seconds must be in (0, 3600]");
+      if (!a.through.empty() && !a.device.empty()) throw Error("explore: give --through or --device, not both");
+      return run_curve(a, a.input);
+    }
+  }
   if (a.through.empty() == a.device.empty())
     throw Error("explore: give either --through \"x,y,z;x,y,z;...\" (a scripted hand) or --device replay:FILE");
   if (!(a.seconds >= 0) || a.seconds > 3600) throw Error("--seconds must be in (0, 3600]");
@@ -199,8 +346,9 @@ void run(const ExploreArgs& a) {
 
 const CommandRegistrar kExplore(
     "explore",
-    "drag a probe over a surface's 3D shadow through the haptic loop: it stays on its sheet across the "
-    "shadow's intersection curves and reports each pass (above/below in w) with sound cues",
+    "drag a probe over a surface's 3D shadow, or along a knot's image, through the haptic loop: it stays "
+    "on its sheet (strand) across the shadow's intersection curves (crossings) and reports each pass "
+    "(above/below in w, over/under) with sound cues; for a knot the Gauss code is built up as it goes",
     [](CLI::App& sub) {
       auto a = std::make_shared<ExploreArgs>();
       sub.add_option("input", a->input, "scene .json, mesh .4off/.off, or a generator call (spun-trefoil:n=48)")
@@ -216,6 +364,8 @@ const CommandRegistrar kExplore(
                      "of a recording to play (default: all)");
       sub.add_option("--events", a->events, "write the crossing events to this CSV file");
       sub.add_option("--wav", a->wav, "write the sound cues of the events to this WAV file (16-bit mono)");
+      sub.add_flag("--depth-tone", a->depth_tone,
+                   "knots: add to the WAV a continuous tone whose pitch follows the probe's depth");
       sub.callback([a] { run(*a); });
     });
 

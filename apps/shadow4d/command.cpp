@@ -28,7 +28,8 @@ const std::map<std::string, std::string>& examples() {
   static const std::map<std::string, std::string> m{
       {"check", "shadow4d check clifford-torus --rotate xw=30,yw=20"},
       {"demo", "shadow4d demo --out demo-output"},
-      {"explore", "shadow4d explore clifford-torus --rotate xw=30,yw=20 --through \"-1,0,0;1,0,0\" --wav passes.wav"},
+      {"explore", "shadow4d explore clifford-torus --rotate xw=30,yw=20 --through \"-1,0,0;1,0,0\" --wav passes.wav; "
+                  "a knot, traced once round: shadow4d explore scenes/trefoil-knot.json --wav crossings.wav"},
       {"generators", "shadow4d generators"},
       {"haptics", "shadow4d haptics --device sim --scene cloth --seconds 2"},
       {"knot", "shadow4d knot identify torus-knot:p=3,q=4   (and: knot make 7_4 --out k.curve)"},

@@ -1,0 +1,161 @@
+// The curve explorer walks its own strand: once round a knot it has passed every crossing twice,
+// once over and once under, in the order of the knot's Gauss code; at a crossing it never jumps
+// to the other strand, however near the hand is to it.
+#include "interact/curve_explorer.hpp"
+#include "interact/curve_explorer_scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.hpp"
+#include "knots/knot_diagram.hpp"
+#include "shape/knot_curves.hpp"
+
+namespace s4d {
+namespace {
+
+// Walks the probe once round component 0 by aiming a little ahead along the image.
+void walk_once_round(CurveExplorer& ex, const Curve<3>& curve, const Frame<3>& frame) {
+  const auto& pts = curve.components[0].points;
+  ASSERT_TRUE(ex.place(frame.shadow(pts[0])));
+  for (std::size_t i = 1; i <= pts.size(); ++i) {
+    const Vec2 ahead = frame.shadow(pts[i % pts.size()]);
+    ex.move_to(ahead, static_cast<double>(i));
+  }
+}
+
+TEST(CurveExplorer, OnceRoundTheTrefoilGivesItsGaussCode) {
+  const Curve<3> k = torus_knot(2, 3, 240);
+  const Frame<3> frame;
+  CurveExplorer ex;
+  auto img = build_curve_image(k, frame);
+  ex.swap_image(*img);
+  ASSERT_EQ(ex.crossing_count(), 3);
+  walk_once_round(ex, k, frame);
+  EXPECT_EQ(ex.gauss_text(), diagram_from_curve(k, frame).gauss_code());
+  int over = 0, under = 0;
+  while (auto e = ex.pop_event()) (e->over ? over : under)++;
+  EXPECT_EQ(over, 3);
+  EXPECT_EQ(under, 3);
+}
+
+TEST(CurveExplorer, TheCinquefoilWalkedBackwardsGivesTheCodeReversed) {
+  const Curve<3> k = torus_knot(2, 5, 300);
+  const Frame<3> frame;
+  CurveExplorer ex;
+  auto img = build_curve_image(k, frame);
+  ex.swap_image(*img);
+  const auto& pts = k.components[0].points;
+  ASSERT_TRUE(ex.place(frame.shadow(pts[0])));
+  for (std::size_t i = pts.size() - 1; i > 0; --i) ex.move_to(frame.shadow(pts[i]), 0);
+  ex.move_to(frame.shadow(pts[0]), 0);
+  const std::vector<int> back = ex.gauss_so_far();
+  walk_once_round(ex, k, frame);
+  const std::vector<int> fwd = ex.gauss_so_far();
+  ASSERT_EQ(back.size(), 10u);
+  ASSERT_EQ(fwd.size(), 10u);
+  for (std::size_t i = 0; i < fwd.size(); ++i) EXPECT_EQ(back[i], fwd[fwd.size() - 1 - i]) << i;
+}
+
+// At every crossing, aim at a point of the other strand just past it: the probe stays on its own.
+TEST(CurveExplorer, AtACrossingItStaysOnItsStrand) {
+  const Curve<3> k = torus_knot(2, 3, 240);
+  const Frame<3> frame;
+  CurveExplorer ex;
+  auto img = build_curve_image(k, frame);
+  ex.swap_image(*img);
+  const auto& pts = k.components[0].points;
+  const int n = static_cast<int>(pts.size());
+  const auto seg_dist = [&](int a, int b) { return std::min(std::abs(a - b), n - std::abs(a - b)); };
+  int tested = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 5; j < n; ++j) {
+      // Segments i and j cross in the shadow: put the probe on i and aim along j.
+      const Vec2 a = frame.shadow(pts[i]), b = frame.shadow(pts[(i + 1) % n]);
+      const Vec2 c = frame.shadow(pts[j]), d = frame.shadow(pts[(j + 1) % n]);
+      Eigen::Matrix2d m;
+      m << b - a, c - d;
+      if (std::abs(m.determinant()) < 1e-12) continue;
+      const Vec2 st = m.inverse() * (c - a);
+      if (st.x() < 0 || st.x() >= 1 || st.y() < 0 || st.y() >= 1) continue;  // half-open, as found
+      ASSERT_TRUE(ex.place(a + st.x() * (b - a)));
+      ASSERT_EQ(ex.probe().segment, i);
+      const Vec2 along_other = frame.shadow(pts[(j + 3) % n]);
+      ex.move_to(along_other, 0);
+      EXPECT_LE(seg_dist(ex.probe().segment, i), 2) << "jumped from segment " << i << " to " << ex.probe().segment;
+      ++tested;
+    }
+  EXPECT_EQ(tested, 3);
+}
+
+TEST(CurveExplorer, TheSpringPullsTheHandOntoTheStrandAndBadInputIsNoForce) {
+  const Curve<3> k = torus_knot(2, 3, 240);
+  const Frame<3> frame;
+  CurveExplorer ex;
+  auto img = build_curve_image(k, frame);
+  ex.swap_image(*img);
+  const Vec2 on = frame.shadow(k.components[0].points[10]);
+  ASSERT_TRUE(ex.place(on));
+  const Vec2 hand = on + Vec2(0.05, 0.05);
+  const Vec2 f = ex.update(hand, Vec2::Zero(), 1000, 0, DampedSpring{200, 1});
+  EXPECT_GT(f.norm(), 0);
+  EXPECT_GT((ex.probe_point() - hand).dot(f), 0) << "towards the probe";
+  EXPECT_NEAR(f.norm(), 200 * (ex.probe_point() - hand).norm(), 1e-9);
+  EXPECT_EQ(ex.update(Vec2(NAN, 0), Vec2::Zero(), 1000, 0, {}), Vec2::Zero());
+  EXPECT_EQ(ex.update(hand, Vec2(INFINITY, 0), 1000, 0, {}), Vec2::Zero());
+  EXPECT_EQ(ex.update(hand, Vec2::Zero(), 0, 0, {}), Vec2::Zero());
+  EXPECT_FALSE(ex.place(Vec2(NAN, 1)));
+  EXPECT_TRUE(std::isnan(ex.probe_point().x()));
+}
+
+TEST(CurveExplorer, ANewImageOfTheSameLayoutKeepsTheProbeAndAnotherLiftsIt) {
+  const Curve<3> k = torus_knot(2, 3, 240);
+  CurveExplorer ex;
+  auto img = build_curve_image(k, Frame<3>());
+  ex.swap_image(*img);
+  ASSERT_TRUE(ex.place(Vec2(1, 1)));
+  const CurveProbe before = ex.probe();
+  auto turned = build_curve_image(k, Frame<3>(Eigen::AngleAxisd(0.3, Vec3::UnitX()).toRotationMatrix()));
+  ex.swap_image(*turned);
+  EXPECT_EQ(ex.probe().segment, before.segment);
+  auto other = build_curve_image(torus_knot(2, 3, 100), Frame<3>());
+  ex.swap_image(*other);
+  EXPECT_FALSE(ex.probe().valid());
+  EXPECT_THROW(build_curve_image(Curve<3>{}, Frame<3>()), Error);
+}
+
+}  // namespace
+}  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// The scene in device units: the hand a little off the strand is pulled onto it by the spring of K
+// N/m; a hand that is not finite gets no force; a new image of a turned view is taken by the tick.
+TEST(CurveExplorerScene, TheHandFeelsTheSpringInDeviceUnitsAndBadInputNoForce) {
+  const Curve<3> k = torus_knot(2, 3, 240);
+  const Frame<3> view;
+  const DeviceMapping mapping = DeviceMapping::fit(Vec3::Zero(), 3.0, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1));
+  CurveExplorerScene scene(k, view, mapping);
+  const Vec3 on = k.components[0].points[0];
+  ASSERT_TRUE(scene.place(on));
+  DeviceState d;
+  d.position = mapping.to_device(on) + Vec3(0.002, 0, 0);  // 2 mm off, sideways in the image
+  const ToolOutput out = scene.step(d, 1e-3);
+  ASSERT_TRUE(out.engaged);
+  ASSERT_TRUE(out.force.allFinite());
+  const Vec3 to_probe = out.anchor - d.position;
+  EXPECT_NEAR(out.force.norm(), 200 * Vec3(to_probe.x(), to_probe.y(), 0).norm(), 1e-6) << "K = 200 N/m";
+  EXPECT_GT(out.force.dot(to_probe), 0);
+  d.position = Vec3(NAN, 0, 0);
+  EXPECT_EQ(scene.step(d, 1e-3).force, Vec3::Zero());
+  scene.offer_image(build_curve_image(k, Frame<3>(Eigen::AngleAxisd(0.2, Vec3::UnitY()).toRotationMatrix())));
+  d.position = mapping.to_device(on);
+  scene.step(d, 1e-3);
+  EXPECT_EQ(scene.stats().images_installed, 1u);
+  EXPECT_TRUE(scene.navigation().explorer().probe().valid()) << "same layout: the probe keeps its place";
+}
+
+}  // namespace
+}  // namespace s4d
