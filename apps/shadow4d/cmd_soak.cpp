@@ -55,7 +55,7 @@ struct Totals {
 // A hand that wanders in the workspace, holds its button now and then, and drops out.
 Trajectory wandering_hand(double seconds, std::mt19937& rng, long long& disconnects) {
   Trajectory t;
-  t.header.device = "soak hand";
+  t.header.device = "soak-hand";
   t.header.caps.max_force = 3.3;
   t.header.caps.max_continuous_force = 0.88;
   t.header.caps.max_stiffness = 1000;
@@ -109,6 +109,33 @@ bool all_finite(const std::vector<double>& v) {
   return true;
 }
 
+// The counters of the loop running now, folded into the totals when it is replaced or at the end.
+struct LoopCounts {
+  const HapticLoop* loop = nullptr;
+  long long steps = 0, rollbacks = 0, freezes = 0, reconnects = 0, clamped = 0, nonfinite = 0;
+
+  void see(const HapticLoop* now, const HapticSnapshot& snap, Totals& t) {
+    if (now != loop) fold(t);
+    loop = now;
+    steps = snap.status.sim_steps;
+    rollbacks = snap.status.rollbacks;
+    freezes = snap.status.global_freezes;
+    reconnects = static_cast<long long>(snap.reconnects);
+    clamped = static_cast<long long>(snap.safety.clamped);
+    nonfinite = static_cast<long long>(snap.safety.nonfinite);
+    t.worst_period_us = std::max(t.worst_period_us, snap.period.max_us);
+  }
+  void fold(Totals& t) {
+    t.steps += steps;
+    t.rollbacks += rollbacks;
+    t.freezes += freezes;
+    t.reconnects += reconnects;
+    t.clamped += clamped;
+    t.nonfinite_requests += nonfinite;
+    *this = LoopCounts{};
+  }
+};
+
 void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir, std::mt19937& rng, Totals& t) {
   const fs::path replay = dir / (scenario.stem().string() + ".traj");
   write_trajectory(replay, wandering_hand(seconds + 5, rng, t.disconnects));
@@ -120,6 +147,10 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
     t.problems.push_back(scenario.filename().string() + " did not simulate: " + s.physics_error() + s.device_error());
     return;
   }
+  if (!s.device_error().empty()) {  // the soak's hand must be the one that drops out
+    t.problems.push_back(scenario.filename().string() + ": the replay hand did not open: " + s.device_error());
+    return;
+  }
   s.send(live_command(LiveCode::kPlay));
   Autosaver autosaver({dir / "autosave.s4d", 2.0, 2});
   RibbonTool ribbon;
@@ -128,11 +159,15 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
   const auto t0 = Clock::now();
   auto next_action = t0, next_check = t0 + std::chrono::seconds(1);
   int autosaves_seen = 0;
+  // A new ribbon or an undo across it restarts the simulation with a new loop: what the old one
+  // counted is kept by folding its last counts in whenever the loop changes.
+  LoopCounts counts;
   while (Clock::now() - t0 < std::chrono::duration<double>(seconds)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     s.refresh();
     const HapticSnapshot* snap = s.snapshot();
     if (!snap) continue;
+    counts.see(s.loop(), *snap, t);
     if (!snap->force_output.allFinite()) ++t.nonfinite_to_device;
     const auto now = Clock::now();
     const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
@@ -208,15 +243,8 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
     }
   }
   s.refresh();
-  if (const HapticSnapshot* snap = s.snapshot()) {
-    t.steps += snap->status.sim_steps;
-    t.rollbacks += snap->status.rollbacks;
-    t.freezes += snap->status.global_freezes;
-    t.reconnects += static_cast<long long>(snap->reconnects);
-    t.clamped += static_cast<long long>(snap->safety.clamped);
-    t.nonfinite_requests += static_cast<long long>(snap->safety.nonfinite);
-    t.worst_period_us = std::max(t.worst_period_us, snap->period.max_us);
-  }
+  if (const HapticSnapshot* snap = s.snapshot()) counts.see(s.loop(), *snap, t);
+  counts.fold(t);
   ++t.rounds;
 }
 

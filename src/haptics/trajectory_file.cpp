@@ -98,10 +98,19 @@ void TickRecord::set_state(const DeviceState& s) {
   buttons = s.buttons;
 }
 
+// A name as the one word the header's line holds: "OpenHaptics Phantom Omni" reads back as
+// OpenHaptics_Phantom_Omni instead of making the whole file unreadable.
+std::string one_word(const std::string& name) {
+  std::string w = name;
+  for (char& c : w)
+    if (static_cast<unsigned char>(c) <= ' ') c = '_';
+  return w.empty() ? "unnamed" : w;
+}
+
 std::string format_header(const TrajectoryHeader& h) {
   std::string out = std::string(kMagic) + "\nrate";
   append_number(out, h.rate);
-  out += "\ndevice " + h.device + "\nscene " + h.scene + "\ncaps";
+  out += "\ndevice " + one_word(h.device) + "\nscene " + one_word(h.scene) + "\ncaps";
   const DeviceCapabilities& c = h.caps;
   for (double v : {c.max_force, c.max_continuous_force, c.max_stiffness, c.max_force_rate})
     append_number(out, v);

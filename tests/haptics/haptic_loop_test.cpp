@@ -133,10 +133,29 @@ TEST(HapticLoop, SurvivesTheDeviceVanishingAndComingBack) {
   a->set_connected(true);
   loop.run_ticks(1);
   EXPECT_TRUE(loop.snapshot().device_connected);
+  EXPECT_EQ(loop.snapshot().reconnects, 1u);
   EXPECT_LT(loop.safety().gain(), 0.01) << "fades in again instead of jumping";
   loop.run_ticks(1500);
   EXPECT_EQ(loop.safety().phase(), SafetyPhase::active);
   EXPECT_GT(loop.safety().last_output().norm(), 0);
+}
+
+// A recording's cable pulls are replayed as such, and each return counts as a recovery.
+TEST(HapticLoop, AReplayedDisconnectIsGoneAndBackAgain) {
+  Trajectory t;
+  t.header.caps.outputs_force = true;
+  for (std::uint64_t i = 0; i < 100; ++i) {
+    TickRecord r;
+    r.tick = i;
+    if ((i >= 20 && i < 30) || (i >= 60 && i < 65)) r.events = kEventDisconnected;
+    t.ticks.push_back(r);
+  }
+  HapticLoop loop(std::make_unique<ReplayDevice>(t, false), std::make_unique<BandedMass>());
+  loop.run_ticks(25);
+  EXPECT_FALSE(loop.snapshot().device_connected);
+  loop.run_ticks(75);
+  EXPECT_TRUE(loop.snapshot().device_connected);
+  EXPECT_EQ(loop.snapshot().reconnects, 2u);
 }
 
 TEST(HapticLoop, ThreadRunsAtTheRateAndTakesCommands) {

@@ -59,6 +59,19 @@ TEST(TrajectoryFile, RoundTripIsBitExact) {
     ASSERT_EQ(std::memcmp(&r.ticks[i], &t.ticks[i], sizeof(TickRecord)), 0) << "tick " << i;
 }
 
+// A device named in words (as real arms are) still writes a file that reads back.
+TEST(TrajectoryFile, ANameWithSpacesReadsBackAsOneWord) {
+  Trajectory t = circle_trajectory(0.05, 1000, 0.01, 1, 0.001);
+  t.header.device = "OpenHaptics Phantom Omni";
+  t.header.scene = "";
+  const fs::path p = temp_file("spaces.traj");
+  write_trajectory(p, t);
+  const Trajectory r = read_trajectory(p);
+  EXPECT_EQ(r.header.device, "OpenHaptics_Phantom_Omni");
+  EXPECT_EQ(r.header.scene, "unnamed");
+  EXPECT_EQ(r.ticks.size(), t.ticks.size());
+}
+
 TEST(TrajectoryFile, ErrorsNameFileAndLine) {
   const std::string head = "# shadow4d haptic trajectory v1\nrate 1000\n";
   EXPECT_NE(parse_error_of("hello\n").find(":1:"), std::string::npos);
