@@ -117,6 +117,10 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       if (in.key_pressed(GLFW_KEY_R)) model.choose(ToolChoice::kSketchRibbon);
       if (in.key_pressed(GLFW_KEY_K)) model.choose(ToolChoice::kSketchKnot);
     }
+    if (in.key_pressed(GLFW_KEY_H)) {
+      model.touch_and_sound_only = !model.touch_and_sound_only;
+      model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
+    }
     if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
       CurveMode& mode = model.scene().view.curve_mode;
       mode = mode == CurveMode::kTubes ? CurveMode::kShadow : mode == CurveMode::kShadow ? CurveMode::kDiagram : CurveMode::kTubes;
@@ -167,7 +171,24 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
   // The explorer's passes as sound: high above in w, low below.
   for (const SceneEvent& e : model.explore.take_new_passes())
-    if (model.audio) model.audio->play(e.kind == kEventPassedAbove ? CueKind::curve_above : CueKind::curve_below);
+    if (model.audio) model.audio->play(e.kind == kEventPassedAbove    ? CueKind::curve_above
+                                       : e.kind == kEventPassedBelow ? CueKind::curve_below
+                                       : e.kind == kEventCrossedOver ? CueKind::crossing_over
+                                                                     : CueKind::crossing_under);
+}
+
+// The knot explorer's Gauss code, built up as crossings are passed (the paper's students asked for
+// it), large enough to read at a glance — also with the picture hidden.
+void explore_panel(GuiModel& model) {
+  if (model.tool != ToolChoice::kExplore || !model.explore.on_curve()) return;
+  ImGui::SetNextWindowPos(ImVec2(360, 30), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Explore", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  const std::string code = model.explore.gauss_so_far();
+  ImGui::SetWindowFontScale(1.6f);
+  ImGui::TextUnformatted(code.empty() ? "(no crossing passed yet)" : code.c_str());
+  ImGui::SetWindowFontScale(1.0f);
+  ImGui::TextDisabled("%zu crossing(s) passed: + over, - under", model.explore.passes().size());
+  ImGui::End();
 }
 
 // [SECTION] scripted commands
@@ -220,7 +241,9 @@ void dump_state(GuiModel& model, const std::string& path) {
   j["tool"] = model.active_tool()->name();
   j["objects"] = model.scene().objects.size();
   Json passes = Json::array();
-  for (const SceneEvent& e : model.explore.passes()) passes.push_back(e.kind == kEventPassedAbove ? "above" : "below");
+  for (const SceneEvent& e : model.explore.passes())
+    passes.push_back(e.kind == kEventPassedAbove ? "above" : e.kind == kEventPassedBelow ? "below" : e.kind == kEventCrossedOver ? "over" : "under");
+  j["explore_gauss"] = model.explore.gauss_so_far();
   j["explore_passes"] = passes;
   if (const HapticSnapshot* snap = s.snapshot()) {
     j["exploring"] = snap->status.exploring;
@@ -234,6 +257,7 @@ void dump_state(GuiModel& model, const std::string& path) {
   j["hits_under_cursor"] = model.grab.hits().size();
   j["knot_panel_name"] = model.knot_panel_name;
   j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
+  j["touch_and_sound_only"] = model.touch_and_sound_only;
   j["sheet"] = model.grab.sheet();
   std::ofstream out(path);
   out << j.dump(1) << "\n";
@@ -411,7 +435,8 @@ int run_gui_app(const GuiOptions& options) {
         haptics.open() = true;
       }
       haptics.draw(model.session);
-      if (Tool* tool = model.active_tool()) {
+      explore_panel(model);
+      if (Tool* tool = model.active_tool(); tool && !model.touch_and_sound_only) {
         Overlay overlay;
         tool->overlay(overlay, model.session);
         draw_overlay(overlay, camera, win);
@@ -424,6 +449,11 @@ int run_gui_app(const GuiOptions& options) {
         try {
           renderer.draw(model.scene(), fw, fh);
           model.intersections = renderer.intersections();
+          if (model.touch_and_sound_only) {  // drawn for the panels' numbers, then hidden
+            const Vec3f bg = model.scene().view.background;
+            glClearColor(bg.x(), bg.y(), bg.z(), 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+          }
         } catch (const std::exception& e) {
           model.error = e.what();
         }

@@ -307,6 +307,10 @@ void Panels::view_panel(GuiModel& model, float fps) {
     v.curve_mode = static_cast<CurveMode>(mode);
     ImGui::SameLine();
     ImGui::TextDisabled("(M)");
+    ImGui::Checkbox("touch and sound only (H)", &model.touch_and_sound_only);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("hides the picture: explore the knot (E) by the force and the crossing cues alone;\n"
+                        "the Gauss code is built up in the Explore panel as crossings are passed");
   }
   ImGui::Checkbox("wireframe", &v.wireframe);
   ImGui::SameLine();

@@ -46,6 +46,7 @@ struct GuiModel {
   std::string screenshot_path = "shadow4d-screenshot.png";
   bool open_haptics = false;   // show the haptics panel
   bool show_history = false;   // Edit > History
+  bool touch_and_sound_only = false;  // the picture hidden: the knot explored by feel and ear (H)
   bool open_knot_table = false;  // Create > Knot from the table
   std::string knot_panel_name;   // what the Knot panel names the selected curve (for dumps)
   std::optional<SessionFile> pending_restore;  // an unfinished run's autosave, offered at start

@@ -33,6 +33,7 @@ struct SceneEvent {
   int kind = 0;
   double point[3] = {};    // shadow space
   double w_self = 0, w_other = 0;
+  int label = 0;           // what was passed, when it has a number (a knot's crossing)
 };
 
 // What a simulating scene reports in every snapshot (zeros for scenes that do not simulate).

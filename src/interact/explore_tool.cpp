@@ -4,12 +4,59 @@
 
 #include <cstdio>
 
+#include "interact/curve_explorer_scene.hpp"
 #include "interact/live_simulation.hpp"
 #include "interact/session.hpp"
+#include "interact/view_crossings.hpp"
 
 namespace s4d {
 
+namespace {
+
+// The scene's curves where they are drawn, as one curve (objects and components in order).
+Curve<3> drawn_curves(const Scene& scene) {
+  Curve<3> all;
+  for (const SceneObject& o : scene.objects)
+    for (Polyline<3>& p : drawn_curve(o.shape, scene.frame)) all.components.push_back(std::move(p));
+  return all;
+}
+
+// The drawn curve point nearest the cursor on the screen, within `pixels`; nullopt when none.
+std::optional<Vec3> curve_point_under(const ToolView& view, const Curve<3>& curves, double pixels) {
+  std::optional<Vec3> best;
+  double best_d = pixels;
+  for (const auto& comp : curves.components)
+    for (const Vec3& p : comp.points) {
+      const Vec2 ndc = view.camera.ndc(p);
+      if (!ndc.allFinite()) continue;
+      const Vec2 px((ndc.x() + 1) * 0.5 * view.window.x(), (1 - ndc.y()) * 0.5 * view.window.y());
+      const double d = (px - view.cursor).norm();
+      if (d < best_d) {
+        best_d = d;
+        best = p;
+      }
+    }
+  return best;
+}
+
+}  // namespace
+
+std::string ExploreTool::gauss_so_far() const {
+  std::string out;
+  for (const SceneEvent& e : passes_) {
+    if (e.kind != kEventCrossedOver && e.kind != kEventCrossedUnder) continue;
+    out += (out.empty() ? "" : ", ") + std::to_string(e.kind == kEventCrossedOver ? e.label : -e.label);
+  }
+  return out;
+}
+
 std::string ExploreTool::help() const {
+  if (on_curve_) {
+    if (!exploring_) return "explore: press on a strand and move along it; a cue at each crossing (high over, low under)";
+    char b[96];
+    std::snprintf(b, sizeof b, "exploring the knot: %zu crossing(s) passed; Gauss code so far: ", passes_.size());
+    return b + gauss_so_far();
+  }
   if (!exploring_) return "explore: press on a surface and move; the probe keeps to its sheet, a cue at each curve passed (high above in w, low below)";
   char b[160];
   int above = 0;
@@ -24,7 +71,43 @@ void ExploreTool::hover(const ToolInput& in, Session& s) {
   s.set_hand(hits.empty() ? in.view.on_plane_through(in.view.centre) : hits[0].point, false);
 }
 
+void ExploreTool::offer_image(const ToolInput& in, Session& s) {
+  const Curve<3> curves = drawn_curves(s.scene());
+  if (curves.components.empty()) return;
+  try {
+    s.offer_curve_image(build_curve_image(curves, camera_frame(in.view.right, in.view.up, in.view.toward_eye)));
+  } catch (const std::exception&) {  // a component too short to walk: keep the last image
+  }
+  image_time_ = in.time;
+  image_camera_ = in.view.camera;
+}
+
+bool ExploreTool::press_curve(const ToolInput& in, Session& s) {
+  const Curve<3> curves = drawn_curves(s.scene());
+  if (curves.components.empty()) return false;
+  const std::optional<Vec3> at = curve_point_under(in.view, curves, 16);
+  if (!at) return false;
+  on_curve_ = true;
+  if (!s.simulating() || s.dimension() != 3) {
+    message_ = "exploring a knot needs its live loop (the knot is not simulated here)";
+    return false;
+  }
+  plane_point_ = *at;
+  offer_image(in, s);
+  s.set_hand(plane_point_, true);
+  s.send(live_explore(true, plane_point_));
+  s.take_events();
+  passes_.clear();
+  new_passes_.clear();
+  exploring_ = true;
+  message_ = help();
+  return true;
+}
+
 bool ExploreTool::press(const ToolInput& in, Session& s) {
+  on_curve_ = false;
+  if (press_curve(in, s)) return true;
+  if (on_curve_) return false;
   const std::vector<SheetHit> hits = pick_sheets(s.scene(), in.view.eye, in.view.ray);
   if (hits.empty() || !s.simulating() || s.dimension() != 4) {
     if (!hits.empty() && s.dimension() != 4) message_ = "exploring needs a surface of R^4: its w is what the cues tell";
@@ -54,8 +137,11 @@ void ExploreTool::release(const ToolInput& in, Session& s) {
   message_ = help();
 }
 
-void ExploreTool::update(const ToolInput&, Session& s) {
+void ExploreTool::update(const ToolInput& in, Session& s) {
   if (!exploring_) return;
+  // The knot moves (it is simulated) and the view turns: its image follows a few times a second.
+  if (on_curve_ && (in.time - image_time_ > 0.25 || !(in.view.camera.view() - image_camera_.view()).isZero(1e-12)))
+    offer_image(in, s);
   for (const SceneEvent& e : s.take_events()) {
     passes_.push_back(e);
     new_passes_.push_back(e);
@@ -73,7 +159,7 @@ void ExploreTool::overlay(Overlay& o, const Session& s) const {
   const std::size_t from = passes_.size() > 12 ? passes_.size() - 12 : 0;
   for (std::size_t i = from; i < passes_.size(); ++i) {
     const SceneEvent& e = passes_[i];
-    const bool above = e.kind == kEventPassedAbove;
+    const bool above = e.kind == kEventPassedAbove || e.kind == kEventCrossedOver;
     o.dots.push_back({Vec3(e.point[0], e.point[1], e.point[2]),
                       above ? overlay_colour(0.95, 0.25, 0.2) : overlay_colour(0.25, 0.45, 1), 4, true});
   }

@@ -14,6 +14,7 @@
 #include "haptics/spsc_queue.hpp"
 #include "haptics/triple_buffer.hpp"
 #include "interact/handover.hpp"
+#include "interact/curve_explorer_scene.hpp"
 #include "interact/surface_explorer.hpp"
 #include "scenario/script_driver.hpp"
 #include "scenario/world_builder.hpp"
@@ -448,6 +449,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
   void offer_crossings(std::unique_ptr<CrossingTable> table) override {
     if (explorer_ && table) crossings_.offer(std::move(table));
   }
+  void offer_curve_image(std::unique_ptr<CurveImage> image) override {
+    if constexpr (D == 3)
+      if (image) curve_nav_.offer(std::move(image));
+  }
   void offer_state(std::unique_ptr<WorldState> state) override {
     if (!state) return;
     held_ = -1;
@@ -501,6 +506,16 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
         }
         return;
       case LiveCode::kExplore:
+        if constexpr (D == 3) {  // a knot's image: the probe walks its strand (4.3.1)
+          curve_nav_.install();
+          exploring_ = c.i[1] == 1 && finite_command(c);
+          held_ = -1;
+          if (exploring_ && !curve_nav_.place(Vec3(c.x[0], c.x[1], c.x[2]))) {
+            exploring_ = false;
+            set_message(message_, "no curve to explore here (offer its image first)");
+          }
+          return;
+        }
         if (!explorer_) {
           set_message(message_, "exploring needs a surface of R^4 (its w is what the sound tells)");
           return;
@@ -650,7 +665,38 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
 
   // 4.3.1 and 5.3: the probe walks its sheet towards the hand, the hand feels the navigation
   // spring, each pass of a shadow curve becomes an event for the sound cues.
+  // The knot studio's navigation: the probe on the curve's image, a cue per crossing passed.
+  void explore_curve(const DeviceState& device, double dt, ToolOutput& out) {
+    curve_nav_.install();
+    explore_time_ += dt;
+    const double mpu = mapping_.metres_per_unit;
+    const Vec3 c = mapping_.to_shadow(device.position), v = mapping_.vector_to_shadow(device.velocity);
+    const DampedSpring spring{params_[kExploreStiffness].value * mpu * mpu, params_[kExploreDamping].value * mpu * mpu};
+    curve_nav_.explorer().set_rearm_distance(1e-3 / mpu);  // a millimetre of the hand
+    const Vec3 f = curve_nav_.update(c, v, 1.0 / dt, explore_time_, spring);
+    while (auto e = curve_nav_.explorer().pop_event()) {
+      SceneEvent& se = events_[event_count_ % SceneStatus::kRecentEvents];
+      se = SceneEvent{};
+      se.time = e->time;
+      se.kind = e->over ? kEventCrossedOver : kEventCrossedUnder;
+      const Frame<3>& view = curve_nav_.explorer().image().frame;
+      const Vec3 at = view.matrix() * Vec3(e->point[0], e->point[1], view.to_view(c).z());
+      for (int k = 0; k < 3; ++k) se.point[k] = at[k];
+      se.label = e->label;
+      ++event_count_;
+    }
+    const Vec3 probe = curve_nav_.probe_at(c);
+    if (!probe.allFinite()) return;
+    probe_ = probe;
+    probe_w_ = curve_nav_.explorer().probe_depth();
+    out.force = mapping_.vector_to_device(f) / (mpu * mpu);
+    if (!out.force.allFinite()) out.force.setZero();
+    out.anchor = mapping_.to_device(probe);
+    out.engaged = true;
+  }
+
   void explore(const DeviceState& device, double dt, ToolOutput& out) {
+    if constexpr (D == 3) return explore_curve(device, dt, out);
     if (!explorer_) return;
     if (CrossingTable* t = crossings_.take()) {
       explorer_->swap_crossings(*t);  // the old table goes back to the UI for freeing
@@ -747,6 +793,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
   Handover<CrossingTable> crossings_;            // from the UI, taken by the tick
   Handover<WorldState> states_;                  // inline: from the UI, applied by the tick
   bool exploring_ = false;
+  CurveNavigation curve_nav_;  // R^3: a knot's image, offered by the UI
   double explore_time_ = 0;
   Vec3 probe_ = Vec3::Zero();
   double probe_w_ = 0;

@@ -40,12 +40,15 @@ enum class LiveCode : int {
   kMapping,      // x0..2 centre, x3..11 axes (row-major), x12 metres per unit, x13..15 workspace centre
   kPlayScript,   // restart from the start with the scenario's script
   kStopScript,   // let go of what the script holds, keep the state
-  kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops
+  kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops; in R^3
+                 // the probe walks the knot image last offered (offer_curve_image)
 };
 
 // SceneEvent kinds of the live simulation.
 inline constexpr int kEventPassedAbove = 1;  // the probe's sheet passed another's shadow above in w
 inline constexpr int kEventPassedBelow = 2;
+inline constexpr int kEventCrossedOver = 3;   // the probe's strand passed a crossing over (label: its number)
+inline constexpr int kEventCrossedUnder = 4;  // ... under
 
 SceneCommand live_command(LiveCode code, int i0 = 0, int i1 = 0);
 SceneCommand live_time_scale(double scale);
@@ -69,6 +72,7 @@ enum LiveParam { kBandStiffness, kBandDamping, kBandMaxForce, kForceScale, kExpl
                  kLiveParamCount };
 
 struct CrossingTable;
+struct CurveImage;
 
 // A state to put the World in at once (an undo, a restored session): every vertex's position
 // and velocity (nv × D each, body order) and the pinned vertices. The simulation pauses there
@@ -89,6 +93,9 @@ class LiveHandover {
   // build_crossing_table on a recent state and the current frame); the latest offer wins, the
   // tick installs it without allocating. No-op for a world of R^3.
   virtual void offer_crossings(std::unique_ptr<CrossingTable> table) = 0;
+  // The knots' image for the curve explorer (interact/curve_explorer.hpp's build_curve_image of the
+  // scene's curves in shadow space, seen through the camera's axes); latest offer wins. No-op in R^4.
+  virtual void offer_curve_image(std::unique_ptr<CurveImage> image) = 0;
   // Puts the World in `state` at the next step and pauses it (a state of the wrong size or with a
   // non-finite value is refused, with the reason in the status message).
   virtual void offer_state(std::unique_ptr<WorldState> state) = 0;

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "haptics/device_spec.hpp"
 #include "haptics/mouse_device.hpp"
+#include "interact/curve_explorer.hpp"
 #include "interact/surface_explorer.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -180,6 +181,12 @@ void Session::refresh_crossings() {
   }
   crossings_frame_ = doc_.scene.frame;
   last_crossings_ = now;
+}
+
+bool Session::offer_curve_image(std::unique_ptr<CurveImage> image) {
+  if (!handover_ || !image) return false;
+  handover_->offer_curve_image(std::move(image));
+  return true;
 }
 
 std::vector<SceneEvent> Session::take_events() {

@@ -19,6 +19,8 @@
 
 namespace s4d {
 
+struct CurveImage;
+
 struct SessionOptions {
   std::string device = "mouse";  // the haptic loop's device (--device): mouse, sim, replay:FILE, ...
   bool threaded = true;          // run the loop's thread; false: the caller steps it (run_ticks)
@@ -79,6 +81,8 @@ class Session {
 
   // Sends a request to the live simulation (false when not simulating or the queue is full).
   bool send(const SceneCommand& cmd);
+  // The knots' image for the curve explorer (false when not simulating).
+  bool offer_curve_image(std::unique_ptr<CurveImage> image);
   // Replaces the loop's device (throws s4d::Error with the reason; the old one keeps running).
   void set_device(const std::string& spec);
   const std::string& device_spec() const { return options_.device; }

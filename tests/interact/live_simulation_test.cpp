@@ -14,6 +14,9 @@
 #include "shape/mesh_checks.hpp"
 #include "scenario/scenario_run.hpp"
 #include "shape/generators.hpp"
+#include "shape/knot_curves.hpp"
+#include "interact/curve_explorer.hpp"
+#include "knots/knot_diagram.hpp"
 
 namespace s4d {
 namespace {
@@ -247,6 +250,47 @@ TEST(LiveSimulation, NoSurfaceNoSimulation) {
   o.shape = generate("torus-knot", {});
   s.objects.push_back(o);
   EXPECT_THROW(make_live_simulation(s, nullptr, {}), Error);
+}
+
+// In R^3 the live simulation's explore walks the knot image the UI offered: a hand traced once
+// round the trefoil passes each crossing twice, over then under, as its Gauss code says.
+TEST(LiveSimulation, InR3ExploreWalksTheOfferedKnotImage) {
+  Scene s;
+  SceneObject o;
+  o.name = "ribbon";
+  o.shape = generate("trefoil-ribbon-3d", {});
+  s.objects.push_back(o);
+  LiveOptions lo;
+  lo.mapping = unit_mapping();
+  auto live = make_live_simulation(s, nullptr, lo);
+  auto* handover = dynamic_cast<LiveHandover*>(live.get());
+  ASSERT_NE(handover, nullptr);
+  const Curve<3> knot = torus_knot(2, 3, 240);
+  handover->offer_curve_image(build_curve_image(knot, Frame<3>()));
+  const auto& pts = knot.components[0].points;
+  live->command(live_explore(true, pts[0]));
+  DeviceState d;
+  double max_force = 0;
+  for (std::size_t i = 0; i <= pts.size() * 8; ++i) {
+    const double u = static_cast<double>(i) / 8.0;
+    const std::size_t a = static_cast<std::size_t>(u) % pts.size(), b = (a + 1) % pts.size();
+    const Vec3 hand = pts[a] + (u - std::floor(u)) * (pts[b] - pts[a]);
+    d.position = lo.mapping.to_device(hand);
+    const ToolOutput out = live->step(d, 1e-3);
+    ASSERT_TRUE(out.force.allFinite());
+    max_force = std::max(max_force, out.force.norm());
+  }
+  SceneStatus st;
+  live->copy_status(st);
+  EXPECT_TRUE(st.exploring);
+  std::string code;
+  for (std::uint64_t e = 0; e < st.event_count; ++e) {
+    const SceneEvent& ev = st.events[e % SceneStatus::kRecentEvents];
+    ASSERT_TRUE(ev.kind == kEventCrossedOver || ev.kind == kEventCrossedUnder);
+    code += (code.empty() ? "" : ", ") + std::to_string(ev.kind == kEventCrossedOver ? ev.label : -ev.label);
+  }
+  EXPECT_EQ(code, diagram_from_curve(knot, Frame<3>()).gauss_code());
+  EXPECT_GT(max_force, 0);
 }
 
 }  // namespace
