@@ -15,6 +15,12 @@
 namespace s4d {
 namespace {
 
+// Gives the explorer the image of `k` through `f`.
+void show(CurveExplorer& ex, const Curve<3>& k, const Frame<3>& f) {
+  auto img = build_curve_image(k, f);
+  ex.swap_image(*img);
+}
+
 // Walks the probe once round component 0 by aiming a little ahead along the image.
 void walk_once_round(CurveExplorer& ex, const Curve<3>& curve, const Frame<3>& frame) {
   const auto& pts = curve.components[0].points;
@@ -29,8 +35,7 @@ TEST(CurveExplorer, OnceRoundTheTrefoilGivesItsGaussCode) {
   const Curve<3> k = torus_knot(2, 3, 240);
   const Frame<3> frame;
   CurveExplorer ex;
-  auto img = build_curve_image(k, frame);
-  ex.swap_image(*img);
+  show(ex, k, frame);
   ASSERT_EQ(ex.crossing_count(), 3);
   walk_once_round(ex, k, frame);
   EXPECT_EQ(ex.gauss_text(), diagram_from_curve(k, frame).gauss_code());
@@ -44,8 +49,7 @@ TEST(CurveExplorer, TheCinquefoilWalkedBackwardsGivesTheCodeReversed) {
   const Curve<3> k = torus_knot(2, 5, 300);
   const Frame<3> frame;
   CurveExplorer ex;
-  auto img = build_curve_image(k, frame);
-  ex.swap_image(*img);
+  show(ex, k, frame);
   const auto& pts = k.components[0].points;
   ASSERT_TRUE(ex.place(frame.shadow(pts[0])));
   for (std::size_t i = pts.size() - 1; i > 0; --i) ex.move_to(frame.shadow(pts[i]), 0);
@@ -63,8 +67,7 @@ TEST(CurveExplorer, AtACrossingItStaysOnItsStrand) {
   const Curve<3> k = torus_knot(2, 3, 240);
   const Frame<3> frame;
   CurveExplorer ex;
-  auto img = build_curve_image(k, frame);
-  ex.swap_image(*img);
+  show(ex, k, frame);
   const auto& pts = k.components[0].points;
   const int n = static_cast<int>(pts.size());
   const auto seg_dist = [&](int a, int b) { return std::min(std::abs(a - b), n - std::abs(a - b)); };
@@ -93,8 +96,7 @@ TEST(CurveExplorer, TheSpringPullsTheHandOntoTheStrandAndBadInputIsNoForce) {
   const Curve<3> k = torus_knot(2, 3, 240);
   const Frame<3> frame;
   CurveExplorer ex;
-  auto img = build_curve_image(k, frame);
-  ex.swap_image(*img);
+  show(ex, k, frame);
   const Vec2 on = frame.shadow(k.components[0].points[10]);
   ASSERT_TRUE(ex.place(on));
   const Vec2 hand = on + Vec2(0.05, 0.05);
@@ -112,8 +114,7 @@ TEST(CurveExplorer, TheSpringPullsTheHandOntoTheStrandAndBadInputIsNoForce) {
 TEST(CurveExplorer, ANewImageOfTheSameLayoutKeepsTheProbeAndAnotherLiftsIt) {
   const Curve<3> k = torus_knot(2, 3, 240);
   CurveExplorer ex;
-  auto img = build_curve_image(k, Frame<3>());
-  ex.swap_image(*img);
+  show(ex, k, Frame<3>());
   ASSERT_TRUE(ex.place(Vec2(1, 1)));
   const CurveProbe before = ex.probe();
   auto turned = build_curve_image(k, Frame<3>(Eigen::AngleAxisd(0.3, Vec3::UnitX()).toRotationMatrix()));
