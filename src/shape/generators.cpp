@@ -147,7 +147,7 @@ Params validated(const GeneratorInfo& info, const Params& given) {
   for (const ParamSpec& p : info.params) out[p.name] = p.default_value;
   for (const auto& [key, value] : given) {
     const auto spec = std::find_if(info.params.begin(), info.params.end(),
-                                   [&](const ParamSpec& p) { return p.name == key; });
+                                   [&key = key](const ParamSpec& p) { return p.name == key; });
     if (spec == info.params.end()) {
       std::string known;
       for (const ParamSpec& p : info.params) known += (known.empty() ? "" : ", ") + p.name;

@@ -154,7 +154,7 @@ TEST(Scene, AbsurdValuesAreRejected) {
   };
   for (const auto& [text, fragment] : cases) {
     SCOPED_TRACE(text);
-    test::expect_parse_error([&] { parse_scene(text, "bad.json"); }, 0, fragment);
+    test::expect_parse_error([&text = text] { parse_scene(text, "bad.json"); }, 0, fragment);
   }
 }
 
