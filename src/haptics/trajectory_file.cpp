@@ -10,6 +10,7 @@
 //   tick <tick> <events> <buttons> <x y z> <vx vy vz> <tx ty tz> <fx fy fz>
 #include "haptics/trajectory_file.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -138,13 +139,22 @@ void append_record(std::string& out, const TickRecord& r) {
 }
 
 Trajectory read_trajectory(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open trajectory file '" + path.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw Error("cannot read trajectory file '" + path.string() + "'");
+  return parse_trajectory(std::move(text).str(), path.string());
+}
+
+Trajectory parse_trajectory(std::string_view text, const std::string& origin) {
   Trajectory t;
-  LineReader lr{path.string()};
-  std::string line;
+  LineReader lr{origin};
   bool magic = false;
-  while (std::getline(in, line)) {
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string_view line = text.substr(at, end - at);
+    at = end + 1;
     ++lr.line;
     if (lr.line == 1) {
       if (line.rfind(kMagic, 0) != 0) lr.fail("not a shadow4d haptic trajectory (first line must be '" +
@@ -184,8 +194,7 @@ Trajectory read_trajectory(const std::filesystem::path& path) {
       for (int i = 0; i < 3; ++i) c.workspace_max[i] = lr.number(w[9 + i]);
       if (c.max_force < 0 || c.max_force_rate < 0) lr.fail("force limits must not be negative");
     } else if (w[0] == "setup") {
-      const std::size_t at = line.find("setup") + 5;
-      std::string rest = line.substr(at);
+      std::string rest(line.substr(line.find("setup") + 5));
       rest.erase(0, rest.find_first_not_of(" \t"));
       while (!rest.empty() && (rest.back() == '\r' || rest.back() == ' ')) rest.pop_back();
       t.header.setup = rest;
@@ -199,8 +208,8 @@ Trajectory read_trajectory(const std::filesystem::path& path) {
       lr.fail("unknown keyword '" + std::string(w[0]) + "'");
     }
   }
-  if (!magic) throw ParseError(path.string(), 0, "empty file, not a haptic trajectory");
-  if (t.ticks.empty()) throw ParseError(path.string(), lr.line, "trajectory has no tick lines");
+  if (!magic) throw ParseError(origin, 0, "empty file, not a haptic trajectory");
+  if (t.ticks.empty()) throw ParseError(origin, lr.line, "trajectory has no tick lines");
   return t;
 }
 

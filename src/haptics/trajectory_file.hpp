@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -47,6 +48,8 @@ struct Trajectory {
 
 // Reads a trajectory; throws ParseError (file:line) on anything malformed and Error if unreadable.
 Trajectory read_trajectory(const std::filesystem::path& path);
+// The same from text in memory; `origin` names it in errors.
+Trajectory parse_trajectory(std::string_view text, const std::string& origin);
 void write_trajectory(const std::filesystem::path& path, const Trajectory& t);
 std::string format_header(const TrajectoryHeader& h);
 void append_record(std::string& out, const TickRecord& r);

@@ -91,6 +91,25 @@ TEST(TrajectoryFile, ErrorsNameFileAndLine) {
   EXPECT_THROW(read_trajectory(temp_file("does-not-exist.traj")), Error);
 }
 
+// The fuzz target and the replay device read the same text; errors name the origin given.
+TEST(TrajectoryFile, ParsesTextInMemoryLikeAFile) {
+  std::string text = format_header(TrajectoryHeader{});
+  TickRecord r;
+  r.tick = 7;
+  r.force[0] = 0.25;
+  append_record(text, r);
+  const Trajectory t = parse_trajectory(text, "in memory");
+  ASSERT_EQ(t.ticks.size(), 1u);
+  EXPECT_EQ(t.ticks[0].tick, 7u);
+  EXPECT_EQ(t.ticks[0].force[0], 0.25);
+  try {
+    parse_trajectory("# shadow4d haptic trajectory v1\nrate 5\n", "in memory");
+    ADD_FAILURE() << "a rate of 5 Hz was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("in memory:2: rate must be", 0), 0u) << e.what();
+  }
+}
+
 TEST(TrajectoryRecorder, WritesEveryPushedTick) {
   const fs::path p = temp_file("recorder.traj");
   TrajectoryHeader h;
