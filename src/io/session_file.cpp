@@ -92,8 +92,9 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     const Json& j = root["simulation"];
     if (!j.is_object()) c.fail("simulation", "must be an object");
     SimulationState& sim = s.simulation;
-    sim.dim = static_cast<int>(c.number(j.value("dim", Json(0)), "simulation.dim"));
-    if (sim.dim != 0 && sim.dim != 3 && sim.dim != 4) c.fail("simulation.dim", "must be 0, 3 or 4");
+    const double dim = c.number(j.value("dim", Json(0)), "simulation.dim");
+    if (dim != 0 && dim != 3 && dim != 4) c.fail("simulation.dim", "must be 0, 3 or 4");
+    sim.dim = static_cast<int>(dim);
     sim.positions = c.numbers(j.value("positions", Json::array()), "simulation.positions");
     sim.velocities = c.numbers(j.value("velocities", Json::array()), "simulation.velocities");
     if (sim.dim > 0 && sim.positions.size() % static_cast<std::size_t>(sim.dim) != 0)
@@ -142,8 +143,12 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
       s.history.push_back(h.get<std::string>());
     }
   }
-  s.history_head = static_cast<int>(c.number(root.value("history_head", Json(static_cast<double>(s.history.size()))), "history_head"));
-  if (s.history_head < 0 || s.history_head > static_cast<int>(s.history.size())) c.fail("history_head", "is outside the history");
+  // Checked as a double first: a huge value would not fit the int (undefined behaviour), and 0.5
+  // is no step of the history.
+  const double head = c.number(root.value("history_head", Json(static_cast<double>(s.history.size()))), "history_head");
+  if (head < 0 || head > static_cast<double>(s.history.size()) || head != std::floor(head))
+    c.fail("history_head", "is outside the history");
+  s.history_head = static_cast<int>(head);
   if (root.contains("saved_at")) s.saved_at = c.number(root["saved_at"], "saved_at");
   if (root.contains("clean_exit")) {
     if (!root["clean_exit"].is_boolean()) c.fail("clean_exit", "must be true or false");

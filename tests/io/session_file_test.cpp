@@ -132,6 +132,16 @@ TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
   EXPECT_NE(error_of(R"({"shadow4d_session": 1, "scene": {"version": 1}, "history": ["a"], "history_head": 2})")
                 .find("history_head: is outside the history"),
             std::string::npos);
+  // Beyond an int, or between two steps: refused before any conversion (UBSan found the first).
+  for (const char* head : {"1e300", "-1e300", "0.5"})
+    EXPECT_NE(error_of(std::string(R"({"shadow4d_session": 1, "scene": {"version": 1}, "history": ["a"], "history_head": )") +
+                       head + "}")
+                  .find("history_head: is outside the history"),
+              std::string::npos)
+        << head;
+  EXPECT_NE(error_of(R"({"shadow4d_session": 1, "scene": {"version": 1}, "simulation": {"dim": 1e300}})")
+                .find("simulation.dim: must be 0, 3 or 4"),
+            std::string::npos);
 }
 
 TEST(AtomicFile, ReplacesWholeKeepsVersionsAndLeavesTheOldFileOnFailure) {
