@@ -158,7 +158,8 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
   if (v.contains("numbers")) {
     if (!v["numbers"].is_object()) c.fail("verdict.numbers", "must be an object");
     for (const auto& [k, x] : v["numbers"].items())
-      s.verdict.numbers[k] = c.number(x, "verdict.numbers." + k, -1e9, 1e9);
+      s.verdict.numbers[k] = k == "axis" ? c.integer(x, "verdict.numbers.axis", 0, s.dim - 1)
+                                         : c.number(x, "verdict.numbers." + k, -1e9, 1e9);
   }
   return s;
 }

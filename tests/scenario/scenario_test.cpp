@@ -82,6 +82,13 @@ TEST(Scenario, MalformedSectionsSayWhereAndWhy) {
       "verdict": {"kind": "deforms", "object": "torus-knot"}}})")
                 .find("needs at least one surface"),
             std::string::npos);
+  // The verdict indexes points by this axis: one outside R^4 was read past the end of a point.
+  for (const char* axis : {"4", "-1", "1.5", "1e300"})
+    EXPECT_NE(error_of(head + R"("scenario": {"name": "x", "duration": 1,
+        "verdict": {"kind": "slides-off", "object": "s", "numbers": {"axis": )" + axis + "}}}}")
+                  .find("scenario.verdict.numbers.axis: must be"),
+              std::string::npos)
+        << axis;
 }
 
 TEST(Scenario, TheOldFormatIsRefusedWithTheVersionMissing) {
