@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <thread>
+#include <utility>
 
 #include "command.hpp"
 #include "core/error.hpp"
@@ -251,7 +252,9 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
 // The knot tools: strokes drawn through a camera, crossings changed, steps undone and redone.
 void soak_knots(double seconds, std::mt19937& rng, Totals& t) {
   Session s;
-  s.open(Document{{}, std::nullopt, "knots"}, SessionOptions{});
+  Document empty;  // named, not a braced temporary: gcc 12 -O3 sees its Scene's strings as uninitialised
+  empty.spec = "knots";
+  s.open(std::move(empty), SessionOptions{});
   const Vec2 window(800, 600);
   const Camera camera = make_camera(BoundingSphere{Vec3::Zero(), 2}, Eigen::Quaterniond::Identity(), 0, 35, 800.0 / 600, 1);
   std::uniform_real_distribution<double> u(0, 1);
