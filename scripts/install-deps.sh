@@ -10,7 +10,9 @@ packages=(
   libgtest-dev libbenchmark-dev
 )
 if [[ "${1:-build}" == test ]]; then
-  packages+=(xvfb xauth libfcl-dev libbullet-dev)
+  # clang and its sanitizer and libFuzzer runtimes for the checked builds; llvm for the
+  # symbolizer that puts file:line into their reports.
+  packages+=(xvfb xauth libfcl-dev libbullet-dev clang libclang-rt-14-dev llvm)
 fi
 missing=()
 for p in "${packages[@]}"; do
