@@ -14,7 +14,7 @@ void HapticsWindow::draw(Session& session) {
   // Under the Simulation panel, clear of the view's middle where the hand works.
   ImGui::SetNextWindowPos(ImVec2(display.x - 350, 560), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(340, std::max(120.0f, display.y - 570)), ImGuiCond_FirstUseEver);
-  if (!session.simulating() || !session.snapshot()) {
+  if (!session.loop() || !session.snapshot()) {
     ImGui::Begin("Haptics", &ui_.open);
     ImGui::TextWrapped("The haptic loop runs while a scene with surfaces is simulated; open one "
                        "(File > Open) to touch it with the mouse or a device.");

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "haptics/spsc_queue.hpp"
 #include "haptics/triple_buffer.hpp"
+#include "interact/curve_sketch_scene.hpp"
 #include "interact/handover.hpp"
 #include "interact/curve_explorer_scene.hpp"
 #include "interact/surface_explorer.hpp"
@@ -422,7 +423,7 @@ class PhysicsThread {
 namespace {
 
 template <int D>
-class LiveSimulation final : public HapticScene, public LiveHandover {
+class LiveSimulation final : public HapticScene, public LiveHandover, public SketchHost {
  public:
   LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
       : options_(o), mapping_(o.mapping), frame4_(o.frame) {
@@ -468,7 +469,14 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
 
   void reset() override { command(live_command(LiveCode::kReset)); }
 
+  CurveSketch& curve_sketch() override { return sketch_; }
+
   void command(const SceneCommand& c) override {
+    if (is_sketch_command(c)) {  // the sketch mode (interact/curve_sketch_scene) holds the hand
+      sketch_.command(c);
+      if (sketch_.active()) held_ = -1, exploring_ = false;
+      return;
+    }
     switch (static_cast<LiveCode>(c.code)) {
       case LiveCode::kGrab:
         if (c.i[0] >= 0 && c.i[0] < nv_ && finite_command(c)) grab(c.i[0], c.i[1]);
@@ -545,7 +553,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
         states_.retire(st);
       }
     }
-    if (button && !button_ && held_ < 0 && !exploring_) {
+    if (button && !button_ && held_ < 0 && !exploring_ && !sketch_.active()) {
       // A device's button grabs the vertex nearest its point in the shadow (the mouse path sends
       // kGrab with the vertex under the cursor instead).
       const int v = nearest(mapping_.to_shadow(device.position), kGrabReach / mapping_.metres_per_unit);
@@ -569,6 +577,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
     } else {
       thread_->set_hand(hand);
       thread_->advance_clock(dt);
+    }
+    if (sketch_.active()) {
+      band_force_ = 0;
+      return sketch_.step(device, dt);
     }
     if (exploring_) {
       explore(device, dt, out);
@@ -788,6 +800,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover {
     return f.allFinite() ? f : Vec3::Zero();
   }
 
+  CurveSketch sketch_;                             // the sketch mode, while the window sketches
   std::vector<Triangle> triangles_;                // the world's, fixed
   std::unique_ptr<SurfaceExplorer> explorer_;      // R^4 only
   Handover<CrossingTable> crossings_;            // from the UI, taken by the tick

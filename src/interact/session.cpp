@@ -10,6 +10,7 @@
 #include "haptics/device_spec.hpp"
 #include "haptics/mouse_device.hpp"
 #include "interact/curve_explorer.hpp"
+#include "interact/curve_sketch_scene.hpp"
 #include "interact/surface_explorer.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -30,6 +31,25 @@ std::unique_ptr<Device> open_device(const std::string& spec) {
 
 }  // namespace
 
+// The loop with the session's device around `scene` (the live simulation, or the sketch alone).
+void Session::start_loop(std::unique_ptr<HapticScene> scene) {
+  std::unique_ptr<Device> device;
+  try {
+    device = open_device(options_.device);
+  } catch (const std::exception& e) {
+    device_error_ = std::string(e.what()) + "; using the mouse";
+    options_.device = "mouse";
+    device = open_device("mouse");
+  }
+  HapticLoopConfig config;
+  config.realtime_priority = options_.realtime_priority;
+  sketch_host_ = dynamic_cast<SketchHost*>(scene.get());
+  loop_ = std::make_unique<HapticLoop>(std::move(device), std::move(scene), config);
+  if (options_.threaded) loop_->start();
+}
+
+CurveSketch* Session::curve_sketch() { return sketch_host_ ? &sketch_host_->curve_sketch() : nullptr; }
+
 Document load_document(const std::string& spec) {
   Document d;
   d.spec = spec;
@@ -46,6 +66,7 @@ void Session::close() {
   monitor_.reset();
   snapshot_ = nullptr;
   handover_ = nullptr;
+  sketch_host_ = nullptr;
   events_seen_ = 0;
 }
 
@@ -68,8 +89,11 @@ void Session::start() {
   rates_ = {};
   dim_ = simulation_dimension(doc_.scene);
   body_vertex_ranges(doc_.scene, first_, count_);
-  if (dim_ == 0) return;  // curves only: nothing to simulate
   std::unique_ptr<HapticScene> live;
+  if (dim_ == 0) {  // curves only: nothing to simulate, but the hand still sketches through the loop
+    start_loop(std::make_unique<CurveSketchScene>());
+    return;
+  }
   try {
     LiveOptions lo;
     lo.async_physics = options_.async_physics;
@@ -81,19 +105,8 @@ void Session::start() {
     physics_error_ = e.what();
     return;
   }
-  std::unique_ptr<Device> device;
-  try {
-    device = open_device(options_.device);
-  } catch (const std::exception& e) {
-    device_error_ = std::string(e.what()) + "; using the mouse";
-    options_.device = "mouse";
-    device = open_device("mouse");
-  }
-  HapticLoopConfig config;
-  config.realtime_priority = options_.realtime_priority;
   handover_ = dynamic_cast<LiveHandover*>(live.get());
-  loop_ = std::make_unique<HapticLoop>(std::move(device), std::move(live), config);
-  if (options_.threaded) loop_->start();
+  start_loop(std::move(live));
 
   std::vector<Vec4> initial;
   std::vector<Triangle> tris;
@@ -324,8 +337,10 @@ void Session::set_mapping(const DeviceMapping& m) {
   send(live_mapping(m));
 }
 
-void Session::set_hand(const Vec3& p, bool pressed) {
-  if (loop_ && p.allFinite()) loop_->set_pointer(mapping_.to_device(p), pressed ? 1u : 0u);
+void Session::set_hand(const Vec3& p, bool pressed) { set_hand_buttons(p, pressed ? 1u : 0u); }
+
+void Session::set_hand_buttons(const Vec3& p, std::uint32_t buttons) {
+  if (loop_ && p.allFinite()) loop_->set_pointer(mapping_.to_device(p), buttons);
 }
 
 Vec3 Session::vertex_shadow(int v) const {

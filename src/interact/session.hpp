@@ -20,6 +20,8 @@
 namespace s4d {
 
 struct CurveImage;
+class CurveSketch;
+class SketchHost;
 
 struct SessionOptions {
   std::string device = "mouse";  // the haptic loop's device (--device): mouse, sim, replay:FILE, ...
@@ -65,7 +67,8 @@ class Session {
   const Document& document() const { return doc_; }
   const std::optional<Scenario>& scenario() const { return doc_.scenario; }
 
-  bool simulating() const { return loop_ != nullptr; }
+  // A World runs (the loop may also run for the sketch alone: loop() is then set, this is false).
+  bool simulating() const { return loop_ != nullptr && dim_ > 0; }
   const std::string& physics_error() const { return physics_error_; }
   const std::string& device_error() const { return device_error_; }
   HapticLoop* loop() { return loop_.get(); }
@@ -112,6 +115,11 @@ class Session {
   const DeviceMapping& mapping() const { return mapping_; }
   // The mouse's hand: a shadow point the mouse proxy follows, and whether the button is down.
   void set_hand(const Vec3& shadow_point, bool pressed);
+  // The same with every button bit (the sketch reads modifiers as buttons: curve_sketch_scene.hpp).
+  void set_hand_buttons(const Vec3& shadow_point, std::uint32_t buttons);
+  // The loop's sketch (the live simulation's sketch mode, or the sketch scene of a document with
+  // nothing to simulate); nullptr when no loop runs.
+  CurveSketch* curve_sketch();
 
   // World vertices of scene object o: [first_vertex(o), first_vertex(o) + vertex_count(o)).
   int first_vertex(int object) const;
@@ -129,6 +137,7 @@ class Session {
 
  private:
   void start();
+  void start_loop(std::unique_ptr<HapticScene> scene);
   void restore(DocumentState state);
 
   Document doc_;
@@ -147,6 +156,7 @@ class Session {
   DeviceMapping mapping_;
   History history_;
   LiveHandover* handover_ = nullptr;  // the live simulation, owned by the loop
+  SketchHost* sketch_host_ = nullptr;  // the loop's scene, when it can sketch
   std::uint64_t events_seen_ = 0, lost_events_ = 0;
   std::chrono::steady_clock::time_point last_crossings_{};
   Frame<4> crossings_frame_;
