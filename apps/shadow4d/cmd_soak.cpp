@@ -260,7 +260,7 @@ void soak_knots(double seconds, std::mt19937& rng, Totals& t) {
   std::uniform_real_distribution<double> u(0, 1);
   const auto t0 = Clock::now();
   while (Clock::now() - t0 < std::chrono::duration<double>(seconds)) {
-    KnotSketchTool tool;
+    CursorKnotSketchTool tool;
     ToolInput in;
     in.view.camera = camera;
     in.view.window = window;

@@ -129,6 +129,9 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     tool = model.active_tool();
     if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
     if (tool && in.key_pressed(GLFW_KEY_P)) tool->key(ToolKey::kPin, ti, session);
+    if (tool && in.key_pressed(GLFW_KEY_BACKSPACE)) tool->key(ToolKey::kBackspace, ti, session);
+    if (tool && (in.key_pressed(GLFW_KEY_ENTER) || in.key_pressed(GLFW_KEY_KP_ENTER)))
+      tool->key(ToolKey::kEnter, ti, session);
   }
   if (tool) tool->update(ti, session);
   const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
@@ -255,6 +258,20 @@ void dump_state(GuiModel& model, const std::string& path) {
     j["ribbon_passages"] = ps;
   }
   j["hits_under_cursor"] = model.grab.hits().size();
+  {
+    const SketchPublished& k = model.knot.published();
+    j["sketch"] = {{"active", k.active},
+                   {"drawing", k.drawing},
+                   {"points", k.point_count},
+                   {"components", k.component_count},
+                   {"crossings_chosen", k.crossing_count},
+                   {"blocked_ticks", k.status.blocked_ticks},
+                   {"crossings_refused", k.status.crossings_refused},
+                   {"max_repulsion", k.status.max_repulsion},
+                   {"max_lag_near", k.status.max_lag_near},
+                   {"last_gauss", model.knot.last_gauss()},
+                   {"last_name", model.knot.last_name()}};
+  }
   j["knot_panel_name"] = model.knot_panel_name;
   j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
   j["touch_and_sound_only"] = model.touch_and_sound_only;
@@ -268,7 +285,7 @@ void dump_state(GuiModel& model, const std::string& path) {
 // workspace laid onto the view's ball (not while a vertex is held: the hand must not jump).
 void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, DeviceMapping& sent_mapping) {
   Session& s = model.session;
-  if (!s.simulating() || !s.snapshot()) return;
+  if (!s.loop() || !s.snapshot()) return;
   const Frame<4>& f = model.scene().frame;
   if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12) {
     s.send(live_frame(f));
@@ -281,7 +298,7 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
   const bool changed = (m.centre - sent_mapping.centre).norm() + (m.axes - sent_mapping.axes).norm() +
                            std::abs(m.metres_per_unit - sent_mapping.metres_per_unit) >
                        1e-9;
-  if (changed && !s.held()) {
+  if (changed && !s.held() && !model.knot.busy()) {  // strokes keep the mapping they were drawn in
     s.set_mapping(m);
     sent_mapping = m;
   }

@@ -74,6 +74,7 @@ struct GuiModel {
     }
   }
   void choose(ToolChoice t) {
+    if (tool == ToolChoice::kSketchKnot && t != tool) knot.leave(session);
     tool = t;
     if (Tool* a = active_tool()) status = a->help();
   }

@@ -8,6 +8,7 @@
 
 #include "core/camera.hpp"
 #include "interact/tool.hpp"
+#include "interact/curve_sketch_scene.hpp"
 #include "knots/sketch.hpp"
 
 namespace s4d {
@@ -51,11 +52,12 @@ class SketchTool {
   std::vector<std::pair<Vec2, bool>> screen_;
 };
 
-// The knot sketch as a Tool (Create > Sketch a knot, K): press, drag and release draw one stroke;
-// shift held where it passes under; the knot joins the scene, its crossings shown and named.
-class KnotSketchTool final : public Tool {
+// The knot sketch by the cursor alone, without the haptic loop: press, drag and release draw
+// one stroke; shift held where it passes under; the knot joins the scene. (The soak and tablet
+// strokes use it; the window sketches through the loop with KnotSketchTool.)
+class CursorKnotSketchTool final : public Tool {
  public:
-  const char* name() const override { return "Sketch a knot"; }
+  const char* name() const override { return "Sketch a knot (cursor)"; }
   std::string help() const override;
   bool press(const ToolInput& in, Session& s) override;
   void drag(const ToolInput& in, Session& s) override;
@@ -69,6 +71,53 @@ class KnotSketchTool final : public Tool {
 
  private:
   SketchTool stroke_;
+};
+
+// The knot sketch by touch (Create > Sketch a knot, K; paper 4.1-4.2, Fig. 4), through the haptic
+// loop's sketch (interact/curve_sketch_scene.hpp): the mouse's proxy, or a device, draws in the
+// plane through the view's centre facing the eye, held there by the sticky stylus; near a strand
+// it is repelled (the proxy lags, the strand glows) and it crosses only with shift (under) or
+// ctrl (over) held — a device's second / third button. Closing near the start closes a component,
+// a new press starts another, Backspace takes back the last segment, Enter (or a device's fourth
+// button) finishes: the knot or link joins the scene as sketch-N, named in the Knot panel.
+class KnotSketchTool final : public Tool {
+ public:
+  const char* name() const override { return "Sketch a knot"; }
+  std::string help() const override;
+  bool press(const ToolInput& in, Session& s) override;
+  void drag(const ToolInput& in, Session& s) override;
+  void release(const ToolInput& in, Session& s) override;
+  void hover(const ToolInput& in, Session& s) override;
+  bool key(ToolKey k, const ToolInput& in, Session& s) override;
+  void update(const ToolInput& in, Session& s) override;
+  void overlay(Overlay& o, const Session& s) const override;
+  // The window chose another tool: the loop stops sketching (strokes not finished are dropped).
+  void leave(Session& s);
+  // Strokes are drawn and not finished: the view's device mapping must hold still.
+  bool busy() const { return last_.point_count > 0; }
+  // Makes the knot or link of the strokes so far and adds it to the scene; false (with the
+  // reason in the message) when there is nothing to make.
+  bool finish(Session& s);
+
+  // The last sketch's first component, as File > Save last sketch stroke writes it (x y u, u = 1
+  // where it was drawn passing under).
+  Curve<3> last_stroke_curve() const { return last_stroke_; }
+  bool has_last_stroke() const { return !last_stroke_.components.empty(); }
+  // What the loop published last (strokes, probe, repulsion), as the window read it.
+  const SketchPublished& published() const { return last_; }
+  const std::string& last_gauss() const { return last_gauss_; }
+  const std::string& last_name() const { return last_name_; }
+
+ private:
+  void hand(const ToolInput& in, Session& s, bool down);
+  void offer_obstacles(Session& s);
+
+  SketchPublished last_;
+  std::vector<FixedStrand> fixed_;  // the scene's other curves in the plane, as offered
+  std::uint64_t finish_seen_ = 0;
+  bool begun_ = false;
+  Curve<3> last_stroke_;
+  std::string last_gauss_, last_name_;
 };
 
 }  // namespace s4d

@@ -2,6 +2,7 @@
 // under xvfb-run (see tests/CMakeLists.txt); in the plain run without DISPLAY it is skipped.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -269,6 +270,93 @@ TEST(GuiSmoke, MCyclesTheCurveDisplayModes) {
   EXPECT_EQ(run_script(trefoil, {"3 key M"}, dir / "one")["curve_mode"], "shadow");
   EXPECT_EQ(run_script(trefoil, {"3 key M", "5 key M"}, dir / "two")["curve_mode"], "diagram");
   EXPECT_EQ(run_script(trefoil, {"3 key M", "5 key M", "7 key M"}, dir / "three")["curve_mode"], "tubes");
+}
+
+}  // namespace
+}  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// Sketch a knot (K) by touch in an empty scene: the trefoil of Fig. 4 drawn with the mouse's proxy
+// through the haptic loop, shift (under) and ctrl (over) held by turns as the stroke meets the
+// strands it drew before; back at the start it closes, Enter finishes, the Knot panel names it.
+TEST(GuiSmoke, ATrefoilSketchedByTouchIsNamedAndTheProxyLaggedAtTheStrands) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_touch_sketch";
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream scene(dir / "empty.json");
+    scene << "{\"version\": 1, \"objects\": []}\n";
+  }
+  std::vector<std::string> l{"3 key K", "10 move 640 440", "14 move 640 441", "20 press left"};
+  const int n = 360, first = 22;
+  bool under = false, over = false;
+  for (int i = 0; i <= n; ++i) {
+    const double t = 2 * 3.14159265358979 * 1.03 * i / n;
+    const int frame = first + 2 * i;
+    const bool want_under = -std::sin(3 * t) < 0;
+    if (want_under != under) l.push_back(std::to_string(frame) + (want_under ? " key-down LEFT_SHIFT" : " key-up LEFT_SHIFT"));
+    if (!want_under != over) l.push_back(std::to_string(frame) + (!want_under ? " key-down LEFT_CONTROL" : " key-up LEFT_CONTROL"));
+    under = want_under;
+    over = !want_under;
+    const double x = 640 + 45 * (std::sin(t) + 2 * std::sin(2 * t)), y = 400 - 45 * (std::cos(t) - 2 * std::cos(2 * t));
+    l.push_back(std::to_string(frame) + " move " + std::to_string(static_cast<int>(std::lround(x))) + " " +
+                std::to_string(static_cast<int>(std::lround(y))));
+    if (i >= n / 3 && i % 12 == 0)
+      l.push_back(std::to_string(frame) + " shot " + (dir / ("drawing-" + std::to_string(i) + ".png")).string());
+  }
+  const int end = first + 2 * n;
+  l.push_back(std::to_string(end + 2) + " key-up LEFT_SHIFT");
+  l.push_back(std::to_string(end + 2) + " key-up LEFT_CONTROL");
+  l.push_back(std::to_string(end + 30) + " release left");
+  l.push_back(std::to_string(end + 32) + " dump " + (dir / "drawn.json").string());
+  l.push_back(std::to_string(end + 40) + " key ENTER");
+  {
+    std::ofstream f(dir / "script.txt");
+    for (const std::string& s : l) f << s << "\n";
+    f << end + 200 << " dump " << (dir / "state.json").string() << "\n"
+      << end + 201 << " shot " << (dir / "shot.png").string() << "\n"
+      << end + 202 << " quit\n";
+  }
+  GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);
+  options.open_spec = (dir / "empty.json").string();
+  options.input = (dir / "script.txt").string();
+  ASSERT_EQ(run_gui_app(options), 0);
+  const auto drawn = nlohmann::json::parse(std::ifstream(dir / "drawn.json"));
+  const auto d = nlohmann::json::parse(std::ifstream(dir / "state.json"));
+  EXPECT_EQ(drawn["tool"].get<std::string>(), "Sketch a knot");
+  EXPECT_TRUE(drawn["sketch"]["active"].get<bool>()) << "the loop runs the sketch in an empty scene";
+  EXPECT_EQ(drawn["sketch"]["components"].get<int>(), 1);
+  EXPECT_GT(drawn["sketch"]["points"].get<int>(), 50);
+  EXPECT_GE(drawn["sketch"]["crossings_chosen"].get<int>(), 3) << "each later passage crossed by a choice";
+  EXPECT_GT(drawn["sketch"]["max_repulsion"].get<double>(), 0.1) << "the strands pushed back";
+  EXPECT_GT(drawn["sketch"]["max_lag_near"].get<double>(), 0.002) << "the proxy lagged behind the cursor near a strand";
+  EXPECT_EQ(d["objects"].get<int>(), 1) << d["status"];
+  EXPECT_EQ(d["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d["knot_panel_name"] << "; " << d["status"];
+  EXPECT_EQ(d["sketch"]["last_name"].get<std::string>().rfind("3_1", 0), 0u) << d["sketch"]["last_gauss"];
+  EXPECT_EQ(d["safety_nonfinite"].get<long long>(), 0);
+  // While drawing, some frame shows a strand glowing yellow near the proxy (the strokes are white,
+  // blue and orange: none is as yellow).
+  std::size_t most_glow = 0, lit = 0;
+  for (int i = n / 3; i <= n; ++i) {
+    if (i % 12 != 0) continue;
+    const Image shot = read_png(dir / ("drawing-" + std::to_string(i) + ".png"));
+    std::size_t glow = 0;
+    lit = 0;
+    for (int y = 0; y < shot.height; ++y)
+      for (int x = 0; x < shot.width; ++x) {
+        const auto* p = shot.pixel(x, y);
+        lit += p[0] + p[1] + p[2] > 150;
+        glow += p[0] > 150 && p[1] > 0.75 * p[0] && p[2] < 0.4 * p[0];
+      }
+    most_glow = std::max(most_glow, glow);
+  }
+  EXPECT_GT(lit, 2000u) << "the stroke and the panels are drawn";
+  EXPECT_GT(most_glow, 20u) << "a strand glows near the proxy";
 }
 
 }  // namespace

@@ -99,12 +99,12 @@ namespace {
 
 // The same stroke through the Tool type, as the window (or its input file) drives it: the knot
 // joins the session's scene, its crossings shown.
-TEST(KnotSketchTool, PressDragReleaseAddsTheKnotToTheScene) {
+TEST(CursorKnotSketchTool, PressDragReleaseAddsTheKnotToTheScene) {
   Session session;  // an empty document: nothing to simulate, knots are curves
   session.open(Document{}, SessionOptions{});
   const Camera c = turned_camera();
   const SketchPlane plane(c);
-  KnotSketchTool tool;
+  CursorKnotSketchTool tool;
   ToolInput in;
   in.view.camera = c;
   in.view.window = kWindow;
