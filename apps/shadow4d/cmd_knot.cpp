@@ -25,6 +25,10 @@
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
 #include "knots/sketch.hpp"
+#include "haptics/device_spec.hpp"
+#include "haptics/replay_device.hpp"
+#include "haptics/simulated_arm.hpp"
+#include "interact/touch_sketch_run.hpp"
 
 namespace s4d::cli {
 namespace {
@@ -138,6 +142,66 @@ json codes_json(const KnotDiagram& d) {
           {"pd", d.pd_code()},
           {"dt", r.dt},
           {"dt_alpha", r.dt_alpha}};
+}
+
+// [SECTION] sketch by touch
+
+// `knot sketch --device replay:T | sim [FILE]`: the touch sketch through the loop, headless.
+void sketch_by_touch(const std::string& device_spec, const std::string& stroke, const std::string& out,
+                     const std::string& record, double dt, bool as_json) {
+  const DeviceSpec spec = parse_device_spec(device_spec);
+  TouchSketchOptions o;
+  o.record = record;
+  std::unique_ptr<Device> device;
+  std::vector<HandSample> hand;
+  if (spec.kind == DeviceSpec::Kind::replay) {
+    if (!stroke.empty()) throw Error("knot sketch --device replay:FILE takes no stroke file (the trajectory is the hand)");
+    Trajectory t = read_trajectory(spec.file);
+    o.plane_z = sketch_plane_of_setup(t.header.setup, t.header.caps.workspace_centre().z());
+    const bool compare = t.header.scene == "curve-sketch";
+    device = std::make_unique<ReplayDevice>(std::move(t), compare);
+  } else if (spec.kind == DeviceSpec::Kind::sim) {
+    if (stroke.empty()) throw Error("knot sketch --device sim needs a stroke FILE for the hand to follow");
+    auto arm = std::make_unique<SimulatedArm>();
+    const DeviceCapabilities& caps = arm->capabilities();
+    const Vec3 half = 0.5 * (caps.workspace_max - caps.workspace_min);
+    o.plane_z = caps.workspace_centre().z();
+    const Curve<3> raw = load_knot_curve(stroke);
+    hand = hand_from_stroke(raw.components[0].points, dt, 1000, caps.workspace_centre(),
+                            0.8 * Vec2(half.x(), half.y()));
+    device = std::move(arm);
+  } else {
+    throw Error("knot sketch --device takes replay:FILE or sim (the window sketches with the mouse and the others)");
+  }
+  const TouchSketchResult r = run_touch_sketch(std::move(device), hand, o);
+  Curve<3> curve = r.link.curve;
+  constexpr double kUnit = 0.05;  // m of the device per unit written
+  for (Polyline<3>& p : curve.components)
+    for (Vec3& q : p.points) q /= kUnit;
+  if (!out.empty()) write_shape_file(curve, out);
+  const KnotIdentification id = identify_knot(curve);
+  if (as_json) {
+    std::cout << json{{"components", curve.components.size()}, {"points", curve.point_count()},
+                      {"crossings", r.link.crossings}, {"gauss", r.gauss}, {"name", id.name},
+                      {"proven", id.proven}, {"ticks", r.ticks},
+                      {"crossings_refused", r.strokes.status.crossings_refused},
+                      {"blocked_ticks", r.strokes.status.blocked_ticks},
+                      {"max_repulsion", r.strokes.status.max_repulsion}, {"max_force", r.max_force},
+                      {"replay_mismatches", r.replay_mismatches}, {"disconnected_ticks", r.disconnected_ticks}}
+                     .dump(2)
+              << "\n";
+    return;
+  }
+  std::cout << "sketched by touch (" << device_spec << ", " << r.ticks << " ticks): " << curve.components.size()
+            << " component(s), " << r.link.crossings << " crossing(s)\n"
+            << "Gauss code: " << (r.gauss.empty() ? "(no crossings)" : r.gauss) << "\n"
+            << "name: " << id.headline() << "\n"
+            << "strands refused without a choice: " << r.strokes.status.crossings_refused
+            << ", largest repulsion " << r.strokes.status.max_repulsion << " N, largest force sent " << r.max_force
+            << " N\n";
+  if (r.disconnected_ticks) std::cout << "device gone for " << r.disconnected_ticks << " ticks (nothing lost)\n";
+  if (!out.empty()) std::cout << "wrote " << out << "\n";
+  if (!record.empty()) std::cout << "recorded " << record << " (replay: shadow4d knot sketch --device replay:" << record << ")\n";
 }
 
 // [SECTION] sub-commands
@@ -404,8 +468,14 @@ void setup(CLI::App& knot) {
   static DynadrawParams pen;
   static bool sketch_json = false;
   auto* sketch = knot.add_subcommand("sketch", "smooth a raw sketched stroke with Dynadraw (Haeberli)");
-  sketch->add_option("file", sketch_in, "stroke: a curve file of cursor samples")->required();
-  sketch->add_option("--out", sketch_out, "where to write the smoothed curve")->required();
+  sketch->add_option("file", sketch_in, "stroke: a curve file of cursor samples (with --device sim: the hand's path)");
+  sketch->add_option("--out", sketch_out, "where to write the smoothed curve (the knot, with --knot or --device)");
+  static std::string sketch_device, sketch_record;
+  sketch->add_option("--device", sketch_device,
+                     "sketch by touch through the haptic loop: replay:TRAJECTORY (a recorded device), or sim "
+                     "(the simulated arm's hand follows FILE: x y u, u = 0 draw, 1 cross under, 2 cross over, "
+                     "-1 pen up); the knot is written in units of 5 cm of the device");
+  sketch->add_option("--record", sketch_record, "with --device: record the device trajectory (for replay:FILE)");
   sketch->add_option("--dt", sketch_dt, "seconds between samples")
       ->capture_default_str()
       ->check(CLI::Range(1e-5, 1.0));
@@ -422,6 +492,11 @@ void setup(CLI::App& knot) {
                    "make the closed knot the GUI's sketch tool makes: samples are x y u, u = 1 where "
                    "the stroke passes under (the modifier held), 0 where it passes over");
   sketch->callback([] {
+    if (!sketch_device.empty()) {
+      sketch_by_touch(sketch_device, sketch_in, sketch_out, sketch_record, sketch_dt, sketch_json);
+      return;
+    }
+    if (sketch_in.empty() || sketch_out.empty()) throw Error("knot sketch needs a stroke FILE and --out (or --device)");
     const Curve<3> raw = load_knot_curve(sketch_in);
     if (sketch_knot) {
       SketchOptions o;
