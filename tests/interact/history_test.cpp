@@ -12,7 +12,8 @@ DocumentState state_with(double x, int objects = 1) {
   DocumentState s;
   for (int i = 0; i < objects; ++i) {
     SceneObject o;
-    o.name = "o" + std::to_string(i);
+    o.name = "o";
+    o.name += std::to_string(i);  // not "o" + ...: gcc 12 -O3 warns falsely (-Wrestrict)
     Surface<4> m;
     m.vertices = {Vec4(x, 0, 0, 0), Vec4(1, 0, 0, 0), Vec4(0, 1, 0, 0)};
     m.triangles = {{0, 1, 2}};
