@@ -242,7 +242,7 @@ TEST(CurveDiagram, AGapAcrossTheStartOfTheLoopIsOneGap) {
   Scene sc = test::scene_of(test::trefoil(200));
   sc.view.curve_mode = CurveMode::kDiagram;
   const SceneGeometry before = build_scene_geometry(sc, 1.0);
-  const ScreenCrossing& c = screen_crossings(sc, before.camera).crossings.at(0);
+  const ScreenCrossing c = screen_crossings(sc, before.camera).crossings.at(0);  // a copy: the list is a temporary
   ASSERT_GE(c.under_at.segment, 0);
   auto& points = std::get<Curve<3>>(sc.objects[0].shape).components[0].points;
   std::rotate(points.begin(), points.begin() + c.under_at.segment, points.end());
