@@ -38,6 +38,19 @@ const std::map<std::string, std::string>& examples() {
       {"session", "shadow4d session info ~/.local/state/shadow4d/autosave.s4d"},
       {"sketch-ribbon", "shadow4d sketch-ribbon scenes/sphere-and-ribbon.json stroke.txt --out threaded.json"},
       {"soak", "shadow4d soak --minutes 30"},
+      {"knot identify", "shadow4d knot identify torus-knot:p=3,q=4"},
+      {"knot code", "shadow4d knot code scenes/trefoil-knot.json --rotate xz=30"},
+      {"knot compare", "shadow4d knot compare torus-knot:p=2,q=3 \"torus-knot:p=2,q=3,mirror=1\""},
+      {"knot info", "shadow4d knot info scenes/trefoil-knot.json"},
+      {"knot unknotting", "shadow4d knot unknotting scenes/trefoil-knot.json"},
+      {"knot make", "shadow4d knot make 7_4 --out k.curve   (knot make --list: the names)"},
+      {"knot relax", "shadow4d knot relax k.curve --out relaxed.curve"},
+      {"knot flip", "shadow4d knot flip scenes/trefoil-knot.json --crossing 1 --out unknot.curve"},
+      {"knot resample", "shadow4d knot resample k.curve --points 200 --out k200.curve"},
+      {"knot sketch", "shadow4d knot sketch stroke.txt --knot --out k.curve   (or --device replay:hand.traj)"},
+      {"knot smooth-depth", "shadow4d knot smooth-depth k.curve --out smooth.curve"},
+      {"session info", "shadow4d session info ~/.local/state/shadow4d/autosave.s4d"},
+      {"session run", "shadow4d session run scenes/cloth.json --seconds 10 --autosave work.s4d --restore"},
   };
   return m;
 }
@@ -49,12 +62,23 @@ constexpr const char* kExitCodes =
 
 }  // namespace
 
+namespace {
+
+// The example of `path` ("knot" or "knot make") and the exit codes, under its --help, and the same
+// for each of its own sub-commands.
+void add_footers(CLI::App& app, const std::string& path) {
+  const auto it = examples().find(path);
+  app.footer((it == examples().end() ? std::string() : "Example: " + it->second + "\n") + kExitCodes);
+  for (CLI::App* sub : app.get_subcommands({})) add_footers(*sub, path + " " + sub->get_name());
+}
+
+}  // namespace
+
 void add_registered_commands(CLI::App& app) {
   for (auto& e : registry()) {
     CLI::App* sub = app.add_subcommand(e.name, e.description);
     e.setup(*sub);
-    const auto it = examples().find(e.name);
-    sub->footer((it == examples().end() ? std::string() : "Example: " + it->second + "\n") + kExitCodes);
+    add_footers(*sub, e.name);
   }
   app.footer(kExitCodes);
 }

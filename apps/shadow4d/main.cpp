@@ -41,7 +41,9 @@ int main(int argc, char** argv) {
     spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
     if (app.get_subcommands().empty()) return s4d::cli::launch_gui(gui);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help is 0; a usage error (CLI11's own codes, 100 and up) is the README's 1, its message
+    // saying what was wrong and to run --help.
+    return app.exit(e) == 0 ? 0 : 1;
   } catch (const s4d::cli::ExitStatus& e) {
     return e.code;
   } catch (const s4d::Error& e) {
