@@ -13,11 +13,13 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <utility>
 #include <nlohmann/json.hpp>
 
 #include "app/haptics_window.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
+#include "app/tool_settings.hpp"
 #include "interact/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
 #include "interact/autosave.hpp"
@@ -29,6 +31,10 @@
 namespace s4d {
 
 namespace {
+
+// How long the input file waits for a restored state to reach the snapshot before going on (a
+// physics thread that never answers must not hang a scripted run).
+constexpr int kMaxStateWaitFrames = 600;
 
 void glfw_error(int code, const char* text) { std::fprintf(stderr, "glfw error %d: %s\n", code, text); }
 
@@ -98,13 +104,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
     }
     if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
-    if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) {
-      const bool redo = in.shift();
-      const std::string label = redo ? (session.history().undone_labels().empty() ? "" : session.history().undone_labels().front())
-                                     : (session.history().done_labels().empty() ? "" : session.history().done_labels().back());
-      if (redo ? session.redo() : session.undo()) model.status = (redo ? "redo: " : "undo: ") + label;
-      else model.status = redo ? "nothing to redo" : "nothing to undo";
-    }
+    if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) Panels::undo_or_redo(model, in.shift());
     if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
     if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
       const bool playing = session.snapshot()->status.playing;
@@ -122,6 +122,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
     }
     if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
+      session.record("change the drawing");
       CurveMode& mode = model.scene().view.curve_mode;
       mode = mode == CurveMode::kTubes ? CurveMode::kShadow : mode == CurveMode::kShadow ? CurveMode::kDiagram : CurveMode::kTubes;
       model.status = std::string("curves drawn as: ") + curve_mode_name(mode);
@@ -211,6 +212,7 @@ void dump_state(GuiModel& model, const std::string& path) {
   Json j;
   Session& s = model.session;
   j["simulating"] = s.simulating();
+  j["state_pending"] = s.state_pending();
   j["physics_error"] = s.physics_error();
   j["status"] = model.status;
   j["error"] = model.error;
@@ -276,6 +278,9 @@ void dump_state(GuiModel& model, const std::string& path) {
   j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
   j["touch_and_sound_only"] = model.touch_and_sound_only;
   j["sheet"] = model.grab.sheet();
+  j["restore_offered"] = model.pending_restore.has_value();
+  j["tool_settings"] = tool_settings(model);
+  j["history"] = s.history().done_labels();
   std::ofstream out(path);
   out << j.dump(1) << "\n";
   if (!out) model.error = "cannot write " + path;
@@ -381,8 +386,20 @@ int run_gui_app(const GuiOptions& options) {
       d.angles = model.view.plane_angles();
       d.trackball = model.view.trackball();
       d.zoom = model.view.zoom();
+      d.settings = tool_settings(model);
     };
-    model.session.restore_view = [&model](const DocumentState& d) { model.view.set(d.angles, d.trackball, d.zoom); };
+    model.session.restore_view = [&model](const DocumentState& d) {
+      model.view.set(d.angles, d.trackball, d.zoom);
+      apply_tool_settings(model, d.settings);
+    };
+    model.session.save_window = [&model](SessionFile& f) {
+      f.view.base_frame = model.view.base_frame();
+      f.view.angles = model.view.plane_angles();
+      f.view.trackball = model.view.trackball();
+      f.view.zoom = model.view.zoom();
+      f.tool = model.active_tool()->name();
+      f.tool_settings = tool_settings(model);
+    };
     model.session_options.device = options.device.empty() ? "mouse" : options.device;
     Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
     if (!model.error.empty() && !options.open_spec.empty()) {
@@ -410,9 +427,16 @@ int run_gui_app(const GuiOptions& options) {
     sent_mapping.metres_per_unit = -1;
     std::vector<std::string> shots, dumps;
     std::size_t objects_seen = model.scene().objects.size();
+    // The input file's clock: it stands still while a restored state (an undo, a redo) is on its
+    // way to the simulation, as a user's next move comes after they see it, whatever the machine.
+    int script_frame = 0, waited = 0;
     for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
       glfwPollEvents();
-      for (const InputEvent& e : input.begin_frame(frame)) {
+      if (!model.session.state_pending() || ++waited > kMaxStateWaitFrames) {
+        ++script_frame;
+        waited = 0;
+      }
+      for (const InputEvent& e : input.begin_frame(script_frame)) {
         if (e.kind == InputEvent::Kind::open) Panels::open(model, e.text);
         else if (e.kind == InputEvent::Kind::shot) shots.push_back(e.text);
         else if (e.kind == InputEvent::Kind::dump) dumps.push_back(e.text);
@@ -424,6 +448,10 @@ int run_gui_app(const GuiOptions& options) {
       ImGui::NewFrame();
 
       model.session.refresh();
+      if (!model.pending_settings.empty() && model.session.snapshot()) {  // a session's hand settings
+        const ToolSettings pending = std::exchange(model.pending_settings, {});
+        apply_tool_settings(model, pending);
+      }
       if (model.scene().objects.size() != objects_seen) {  // a sketched ribbon: keep it in view
         objects_seen = model.scene().objects.size();
         model.fit = enclosing(model.fit, fit_of(model.scene()));

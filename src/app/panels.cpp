@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "app/tool_settings.hpp"
 #include "core/error.hpp"
 #include "interact/live_simulation.hpp"
 #include "io/object_file.hpp"
@@ -17,6 +18,18 @@
 namespace s4d {
 
 namespace {
+
+// One change of a tool setting (a whole slider drag) is one undoable step holding the value before
+// it: on the frame an edit starts, `swap` puts the old value in place for the record, then back.
+// (The hand's parameters need no swap: the snapshot shows the old value until the loop has the
+// new one.)
+template <typename Swap>
+void record_tool_setting(GuiModel& model, const std::string& label, Swap swap) {
+  if (!ImGui::IsItemActivated()) return;
+  swap();
+  model.session.record(label);
+  swap();
+}
 
 const std::vector<std::string> kOpenExtensions{".json", ".s4d", ".off", ".4off", ".noff", ".vect",
                                                ".4vect", ".txt", ".xyz", ".curve"};
@@ -96,11 +109,36 @@ void Panels::open(GuiModel& model, const std::string& spec) {
   }
 }
 
+void Panels::undo_or_redo(GuiModel& model, bool redo) {
+  Session& session = model.session;
+  if (Tool* tool = model.active_tool(); tool && tool->key(redo ? ToolKey::kRedo : ToolKey::kUndo, ToolInput{}, session)) {
+    model.status = (redo ? "redo: " : "undo: ") + tool->take_message();
+    return;
+  }
+  const History& h = session.history();
+  const std::string label = redo ? (h.can_redo() ? h.undone_labels().front() : "") : (h.can_undo() ? h.done_labels().back() : "");
+  if (redo ? session.redo() : session.undo()) model.status = (redo ? "redo: " : "undo: ") + label;
+  else model.status = redo ? "nothing to redo" : "nothing to undo";
+}
+
 void Panels::open_session(GuiModel& model, const SessionFile& saved, const std::string& path) {
   model.session.open_saved(saved, path, model.session_options);
   model.view.reset(model.scene());
+  model.view.set_base_frame(saved.view.base_frame);
+  model.view.set(saved.view.angles, saved.view.trackball, saved.view.zoom);
   model.fit = fit_of(model.scene());
+  ToolChoice chosen = ToolChoice::kTouch;
+  const ToolChoice was = model.tool;
+  for (ToolChoice c : {ToolChoice::kTouch, ToolChoice::kExplore, ToolChoice::kSketchRibbon, ToolChoice::kSketchKnot}) {
+    model.tool = c;
+    if (saved.tool == model.active_tool()->name()) chosen = c;
+  }
+  model.tool = was;
+  model.choose(chosen);
+  apply_tool_settings(model, saved.tool_settings);
   model.status = "opened the session " + path + " (saved from '" + saved.opened + "')";
+  for (int v : saved.simulation.held)
+    model.status += "; vertex " + std::to_string(v) + ", held when saved, is pinned where it was (P lets it go)";
   if (!model.session.physics_error().empty())
     model.status += " (not simulated: " + model.session.physics_error() + ")";
 }
@@ -191,8 +229,8 @@ void Panels::menu_bar(GuiModel& model) {
     const History& h = model.session.history();
     const std::string undo = h.can_undo() ? "Undo " + h.done_labels().back() : "Undo";
     const std::string redo = h.can_redo() ? "Redo " + h.undone_labels().front() : "Redo";
-    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.can_undo())) model.session.undo();
-    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.can_redo())) model.session.redo();
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.can_undo() || model.knot.busy())) undo_or_redo(model, false);
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.can_redo())) undo_or_redo(model, true);
     ImGui::MenuItem("History", nullptr, &model.show_history);
     ImGui::EndMenu();
   }
@@ -286,10 +324,14 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::Separator();
   ImGui::TextUnformatted("Drawing");
   ViewSettings& v = model.scene().view;
+  ViewSettings v_before = v;  // each change of the drawing is one undoable step (record_tool_setting)
+  const auto drawn = [&] { record_tool_setting(model, "change the drawing", [&] { std::swap(v, v_before); }); };
   ImGui::Checkbox("depth colour", &v.depth_colour);
+  drawn();
   if (v.depth_colour) {
     int map = static_cast<int>(v.colour_map);
     ImGui::Combo("colour map", &map, "coolwarm\0rainbow\0grey\0");
+    drawn();
     v.colour_map = static_cast<ColourMap>(map);
     legend(v.colour_map, model.scene());
   }
@@ -298,11 +340,14 @@ void Panels::view_panel(GuiModel& model, float fps) {
     ImGui::TextUnformatted("curves:");
     ImGui::SameLine();
     ImGui::RadioButton("tubes", &mode, static_cast<int>(CurveMode::kTubes));
+    drawn();
     ImGui::SameLine();
     ImGui::RadioButton("shadow", &mode, static_cast<int>(CurveMode::kShadow));
+    drawn();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the plain image: no 3D cues at all");
     ImGui::SameLine();
     ImGui::RadioButton("diagram", &mode, static_cast<int>(CurveMode::kDiagram));
+    drawn();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the crossing diagram: a gap in the under strand at each crossing");
     v.curve_mode = static_cast<CurveMode>(mode);
     ImGui::SameLine();
@@ -313,15 +358,20 @@ void Panels::view_panel(GuiModel& model, float fps) {
                         "the Gauss code is built up in the Explore panel as crossings are passed");
   }
   ImGui::Checkbox("wireframe", &v.wireframe);
+  drawn();
   ImGui::SameLine();
   ImGui::Checkbox("flat shadow", &v.shadow);
+  drawn();
   float radius = static_cast<float>(v.tube_radius);
   if (ImGui::SliderFloat("tube radius", &radius, 0.002f, 0.3f, "%.3f", ImGuiSliderFlags_Logarithmic))
     v.tube_radius = radius;
+  drawn();
   float opacity = static_cast<float>(v.opacity);
   if (ImGui::SliderFloat("opacity", &opacity, 0.05f, 1.0f, "%.2f")) v.opacity = opacity;
+  drawn();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("below 1 a sheet behind shows through the one in front");
   ImGui::Checkbox("intersections and crossings", &v.intersections);
+  drawn();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("where the shadow crosses itself: yellow only in the shadow (the sheets are\n"
                       "apart in w), magenta where the surface truly meets itself in R^4;\n"
@@ -421,9 +471,10 @@ void Panels::simulation_panel(GuiModel& model) {
       session.send(live_command(LiveCode::kStopScript));
     }
   }
-  static float time_scale = 1;
-  if (ImGui::SliderFloat("time scale", &time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
-    session.send(live_time_scale(time_scale));
+  float scale_before = model.time_scale;
+  if (ImGui::SliderFloat("time scale", &model.time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
+    session.send(live_time_scale(model.time_scale));
+  record_tool_setting(model, "change the time scale", [&] { std::swap(model.time_scale, scale_before); });
 
   ImGui::Separator();
   ImGui::TextUnformatted("Physics (applied live)");
@@ -494,6 +545,7 @@ void Panels::simulation_panel(GuiModel& model) {
       char label[64];
       std::snprintf(label, sizeof label, "%s##band%d", sp.name, i);
       if (ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &sp.min, &sp.max, "%.3g")) session.loop()->set_param(i, v);
+      record_tool_setting(model, std::string("change the hand's ") + sp.name, [] {});
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", sp.unit);
     }
   }
@@ -558,10 +610,15 @@ void Panels::ribbon_panel(GuiModel& model) {
   ImGui::SetNextWindowPos(ImVec2(350, ImGui::GetIO().DisplaySize.y - 150), ImGuiCond_FirstUseEver);
   ImGui::Begin("Ribbon", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   RibbonSketchOptions& o = model.ribbon.options;
+  RibbonSketchOptions before = o;
+  const auto put_back = [&] { std::swap(o, before); };
   float width = static_cast<float>(o.width);
   if (ImGui::SliderFloat("width", &width, 0.0f, 1.0f, width > 0 ? "%.3f" : "from the view")) o.width = width;
+  record_tool_setting(model, "change the ribbon's width", put_back);
   ImGui::Checkbox("closed (a loop)", &o.closed);
+  record_tool_setting(model, "change the ribbon's ends", put_back);
   ImGui::SliderInt("across", &o.across, 2, 8);
+  record_tool_setting(model, "change the ribbon's rows", put_back);
   if (const SketchedRibbon* r = model.ribbon.last()) {
     ImGui::Text("last: %zu rows, length %.2f, %zu passage(s)", r->w.size(), r->length, r->passages.size());
     for (const RibbonPassage& p : r->passages)
@@ -578,9 +635,9 @@ void Panels::history_panel(GuiModel& model) {
   ImGui::Begin("History", &model.show_history);
   Session& s = model.session;
   const History& h = s.history();
-  if (ImGui::Button("Undo")) s.undo();
+  if (ImGui::Button("Undo")) undo_or_redo(model, false);
   ImGui::SameLine();
-  if (ImGui::Button("Redo")) s.redo();
+  if (ImGui::Button("Redo")) undo_or_redo(model, true);
   ImGui::SameLine();
   ImGui::TextDisabled("%zu step(s), %.1f MB", h.done_labels().size() + h.undone_labels().size(),
                       static_cast<double>(h.bytes()) / (1 << 20));
@@ -675,9 +732,7 @@ void Panels::dialogs(GuiModel& model) {
     try {
       auto path = *p;
       if (path.extension() != ".s4d") path += ".s4d";
-      SessionFile f = model.session.save_state();
-      f.tool = model.active_tool()->name();
-      write_session(f, path);
+      write_session(model.session.save_state(), path);
       model.status = "saved the session " + path.string();
     } catch (const std::exception& e) {
       model.error = e.what();

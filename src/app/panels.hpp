@@ -3,6 +3,7 @@
 // dialog, legend, status line. They edit a GuiModel; the window loop acts on its requests.
 #pragma once
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,8 @@ struct GuiModel {
   std::string knot_panel_name;   // what the Knot panel names the selected curve (for dumps)
   std::optional<SessionFile> pending_restore;  // an unfinished run's autosave, offered at start
   std::string autosave_path;
+  float time_scale = 1;          // the simulation's, sent live (Simulation panel)
+  std::map<std::string, double> pending_settings;  // tool settings waiting for the loop (tool_settings.hpp)
   // [tools]
   ToolChoice tool = ToolChoice::kTouch;
   GrabTool grab;
@@ -93,6 +96,9 @@ class Panels {
   static void open(GuiModel& model, const std::string& spec);
   // Takes a document already read (the window's start, a test).
   static void open(GuiModel& model, Document doc);
+  // Ctrl+Z / Ctrl+Shift+Z, the Edit menu and the History panel: the active tool's unfinished work
+  // first (strokes not yet a knot), then the session's history; the status line says what.
+  static void undo_or_redo(GuiModel& model, bool redo);
   // Takes up a saved session (File > Open of a .s4d, the autosave after a crash).
   static void open_session(GuiModel& model, const SessionFile& saved, const std::string& path);
 

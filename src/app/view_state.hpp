@@ -38,6 +38,9 @@ class ViewState {
   // For undo: the trackball and the zoom as they are, and put back.
   const Eigen::Quaterniond& trackball() const { return trackball_; }
   double zoom() const { return zoom_; }
+  // For sessions: the frame the angles turn from (the scene's, as opened).
+  const Frame<4>& base_frame() const { return base_frame_; }
+  void set_base_frame(const Frame<4>& base) { base_frame_ = base; }
   void set(const std::array<float, 6>& angles, const Eigen::Quaterniond& trackball, double zoom) {
     angles_ = angles;
     trackball_ = trackball;

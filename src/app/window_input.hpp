@@ -13,6 +13,8 @@
 //   20 shot FILE.png       save the window (panels included) after this frame
 //   21 dump FILE.json      write the session's state (simulation, checks, vertex positions)
 //   22 quit
+// The file's frames count only frames that show the session's latest state: while an undone or
+// redone state is on its way to the simulation, the file waits (gui_app.cpp).
 #pragma once
 #include <array>
 #include <deque>

@@ -55,6 +55,7 @@ struct SceneStatus {
   double lag = 0;               // s the simulation trails the haptic clock
   int pinned = 0;               // pinned vertices
   std::uint64_t settings_revision = 0;  // bumps when physics settings were applied
+  std::uint64_t state_revision = 0;     // the revision of the last state put in place (an undo)
   char message[160] = {};       // the last request the scene refused, and why
   bool exploring = false;       // the probe walks the surface instead of the band pulling it
   Vec3 probe = Vec3::Zero();    // shadow space, where the probe is

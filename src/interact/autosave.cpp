@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "interact/session.hpp"
+#include "io/atomic_file.hpp"
 
 namespace s4d {
 
@@ -29,6 +30,7 @@ std::optional<SessionFile> unfinished_autosave(const std::filesystem::path& path
 
 Autosaver::Autosaver(AutosaveOptions options) : options_(std::move(options)) {
   if (options_.path.empty()) options_.path = default_autosave_path();
+  remove_stale_temporaries(options_.path);  // what a killed run was writing (its whole file is kept)
   last_ = std::chrono::steady_clock::now();
 }
 

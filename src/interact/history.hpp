@@ -5,6 +5,7 @@
 // states, whichever is reached first (the oldest go).
 #pragma once
 #include <array>
+#include <map>
 #include <cstddef>
 #include <deque>
 #include <optional>
@@ -23,6 +24,7 @@ struct DocumentState {
   std::array<float, 6> angles{};
   Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();
   double zoom = 1;
+  std::map<std::string, double> settings;  // the window's tool settings (app/tool_settings.hpp)
   std::size_t bytes() const;  // an estimate of the memory it holds
 };
 

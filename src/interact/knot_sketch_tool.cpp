@@ -157,9 +157,14 @@ void KnotSketchTool::hover(const ToolInput& in, Session& s) { hand(in, s, false)
 bool KnotSketchTool::key(ToolKey k, const ToolInput&, Session& s) {
   switch (k) {
     case ToolKey::kBackspace:
+    case ToolKey::kUndo:
       if (!busy()) return false;
       s.send(sketch_command(SketchCode::kBackspace));
       message_ = "last segment removed";
+      return true;
+    case ToolKey::kRedo:
+      if (!busy()) return false;  // the history's redo would drop the strokes: keep them
+      message_ = "finish the sketch (Enter) or drop it (Esc) before redoing";
       return true;
     case ToolKey::kEnter:
       finish(s);

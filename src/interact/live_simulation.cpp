@@ -233,6 +233,7 @@ class Core {
 
   // The World put in `s` (an undo, a restored session), paused there.
   void set_state(const WorldState& s) {
+    status_.state_revision = s.revision;  // landed, even when refused (its message says why)
     World<D>& w = world_.world;
     const std::size_t n = static_cast<std::size_t>(w.vertex_count());
     if (s.positions.size() != n * D || (!s.velocities.empty() && s.velocities.size() != n * D)) {
@@ -252,6 +253,7 @@ class Core {
       set_message(status_, e.what());
       return;
     }
+    w.set_time(s.time);
     for (int i = 0; i < w.vertex_count(); ++i) w.unpin(i);
     for (int p : s.pinned)
       if (p >= 0 && p < w.vertex_count()) w.pin(p);
@@ -456,8 +458,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   }
   void offer_state(std::unique_ptr<WorldState> state) override {
     if (!state) return;
-    held_ = -1;
-    exploring_ = false;
+    // The hand lets go on the loop's thread (step() reads this), which owns held_ and exploring_.
+    let_go_.store(true, std::memory_order_release);
     if (thread_) thread_->offer_state(std::move(state));
     else states_.offer(std::move(state));
   }
@@ -547,6 +549,11 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     device_ = device;
     const bool button = device.buttons & 1u;
     if (thread_) current_ = &thread_->state();  // one consistent state for the whole tick
+    if (let_go_.exchange(false, std::memory_order_acq_rel)) {
+      held_ = -1;
+      exploring_ = false;
+      grabbed_by_button_ = false;
+    }
     if (core_) {
       if (WorldState* st = states_.take()) {
         core_->set_state(*st);
@@ -831,6 +838,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   Vec<D> grab_view_ = Vec<D>::Zero();
   Vec3 grab_device_ = Vec3::Zero();
   bool button_ = false, grabbed_by_button_ = false;
+  std::atomic<bool> let_go_{false};  // an offered state: the hand lets go at the next tick
   double band_force_ = 0;
 };
 

@@ -81,6 +81,10 @@ struct WorldState {
   std::vector<double> positions, velocities;
   std::vector<int> pinned;
   bool play = false;  // go on playing from it (a restored session that was playing)
+  double time = -1;   // s simulated, for a restored session; negative: the World's own goes on (undo)
+  // Numbers the offers (the Session counts them); SceneStatus::state_revision says which one the
+  // World is in, so the UI knows when the snapshot shows the restored state.
+  std::uint64_t revision = 0;
 };
 
 // What the UI hands a running live simulation directly (thread-safe, never blocking either side).

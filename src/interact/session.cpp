@@ -87,6 +87,8 @@ void Session::start() {
   physics_error_.clear();
   device_error_.clear();
   rates_ = {};
+  offered_revision_ = 0;
+  offered_ = {};
   dim_ = simulation_dimension(doc_.scene);
   body_vertex_ranges(doc_.scene, first_, count_);
   std::unique_ptr<HapticScene> live;
@@ -142,7 +144,8 @@ void Session::refresh() {
   snapshot_ = &snap;
   const int d = snap.point_dimension;
   // Objects added since the simulation started (a sketched knot) are not bodies of it.
-  for (std::size_t o = 0; o < std::min(doc_.scene.objects.size(), first_.size()); ++o) {
+  const std::size_t bodies = state_pending() ? 0 : std::min(doc_.scene.objects.size(), first_.size());
+  for (std::size_t o = 0; o < bodies; ++o) {
     if (first_[o] < 0) continue;
     SceneObject& obj = doc_.scene.objects[o];
     if (d == 4) {
@@ -223,13 +226,24 @@ SessionFile Session::save_state() const {
   f.opened = doc_.spec;
   if (snapshot_) {
     f.simulation.dim = snapshot_->point_dimension;
-    f.simulation.positions = snapshot_->points;
-    f.simulation.velocities = snapshot_->velocities;
-    for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
-      if (snapshot_->flags[v] & 1) f.simulation.pinned.push_back(static_cast<int>(v));
     f.simulation.time = snapshot_->status.sim_time;
-    f.simulation.playing = snapshot_->status.playing;
+    if (state_pending()) {
+      if (offered_.time >= 0) f.simulation.time = offered_.time;
+      f.simulation.positions = offered_.positions;
+      f.simulation.velocities = offered_.velocities;
+      if (f.simulation.velocities.empty()) f.simulation.velocities.assign(offered_.positions.size(), 0.0);
+      f.simulation.pinned = offered_.pinned;
+      f.simulation.playing = offered_.play;
+    } else {
+      f.simulation.positions = snapshot_->points;
+      f.simulation.velocities = snapshot_->velocities;
+      for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
+        if (snapshot_->flags[v] & 1) f.simulation.pinned.push_back(static_cast<int>(v));
+      f.simulation.playing = snapshot_->status.playing;
+      if (snapshot_->status.held_vertex >= 0) f.simulation.held.push_back(snapshot_->status.held_vertex);
+    }
   }
+  if (save_window) save_window(f);
   // The view's rotation is in the scene's frame already (the window writes it in each frame).
   f.view.base_frame = doc_.scene.frame;
   f.view.trackball = doc_.scene.view.trackball;
@@ -255,15 +269,32 @@ void Session::open_saved(const SessionFile& saved, const std::string& path, cons
     w->positions = sim.positions;
     w->velocities = sim.velocities;
     w->pinned = sim.pinned;
+    for (int v : sim.held)
+      if (std::find(w->pinned.begin(), w->pinned.end(), v) == w->pinned.end()) w->pinned.push_back(v);
     w->play = sim.playing;
-    handover_->offer_state(std::move(w));
+    w->time = sim.time;
+    offer_state(std::move(w));
   }
+}
+
+void Session::offer_state(std::unique_ptr<WorldState> state) {
+  if (!handover_ || !state) return;
+  state->revision = ++offered_revision_;
+  offered_ = *state;
+  handover_->offer_state(std::move(state));
+}
+
+bool Session::state_pending() const {
+  return handover_ && offered_revision_ > 0 &&
+         (!snapshot_ || snapshot_->status.state_revision < offered_revision_);
 }
 
 DocumentState Session::capture() const {
   DocumentState d;
   d.scene = doc_.scene;
-  if (snapshot_)
+  if (state_pending())
+    d.pinned = offered_.pinned;
+  else if (snapshot_)
     for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
       if (snapshot_->flags[v] & 1) d.pinned.push_back(static_cast<int>(v));
   if (capture_view) capture_view(d);
@@ -315,7 +346,7 @@ void Session::restore(DocumentState state) {
       }, doc_.scene.objects[o].shape);
     }
     w->pinned = state.pinned;
-    handover_->offer_state(std::move(w));
+    offer_state(std::move(w));
   }
   if (restore_view) restore_view(state);
 }

@@ -102,11 +102,14 @@ class Session {
   // The window's part of a state: its 4D rotation, trackball and zoom.
   std::function<void(DocumentState&)> capture_view;
   std::function<void(const DocumentState&)> restore_view;
+  // The window's part of a saved session (its view, the active tool, the tool settings).
+  std::function<void(SessionFile&)> save_window;
 
   // [sessions] The work as it is now (File > Save session, the autosave): the scene with its
   // current shapes, the simulation's state from the last snapshot, the view, the history's labels.
   SessionFile save_state() const;
-  // Opens a saved session: its document, then the World put in the saved state.
+  // Opens a saved session: its document, then the World put in the saved state. A vertex the hand
+  // held when it was saved is pinned where it was (no hand holds it now; P lets it go).
   void open_saved(const SessionFile& saved, const std::string& path, const SessionOptions& options);
 
   // The device's workspace laid onto the view (sent to the simulation; the window refits it
@@ -129,6 +132,10 @@ class Session {
   // Where world vertex v is drawn (shadow space, from the last refresh); NaN when unknown.
   Vec3 vertex_shadow(int vertex) const;
   bool held() const { return snapshot_ && snapshot_->status.held_vertex >= 0; }
+  // A state was handed to the simulation (an undo, a redo, a restored session) and the snapshot
+  // does not show it yet: until it does, the scene keeps the restored shapes (refresh() copies
+  // nothing over them) and capture() and save_state() take the state handed over.
+  bool state_pending() const;
   bool exploring() const { return snapshot_ && snapshot_->status.exploring; }
   // The events (passes above / below) the loop reported since the last call, oldest first; events
   // older than the snapshot's ring are lost (counted in lost_events()).
@@ -139,6 +146,7 @@ class Session {
   void start();
   void start_loop(std::unique_ptr<HapticScene> scene);
   void restore(DocumentState state);
+  void offer_state(std::unique_ptr<WorldState> state);
 
   Document doc_;
   SessionOptions options_;
@@ -156,6 +164,8 @@ class Session {
   DeviceMapping mapping_;
   History history_;
   LiveHandover* handover_ = nullptr;  // the live simulation, owned by the loop
+  std::uint64_t offered_revision_ = 0;  // the last state offered to this simulation (0: none)
+  WorldState offered_;                  // a copy of it, while state_pending()
   SketchHost* sketch_host_ = nullptr;  // the loop's scene, when it can sketch
   std::uint64_t events_seen_ = 0, lost_events_ = 0;
   std::chrono::steady_clock::time_point last_crossings_{};

@@ -46,7 +46,9 @@ struct ToolInput {
   double time = 0;  // s, the window's clock
 };
 
-enum class ToolKey { kTab, kPin, kEscape, kBackspace, kEnter };
+// kUndo / kRedo: Ctrl+Z / Ctrl+Shift+Z, offered to the tool first, so that work it holds and has
+// not yet made a step of the history (strokes not finished) is undone piece by piece, not lost.
+enum class ToolKey { kTab, kPin, kEscape, kBackspace, kEnter, kUndo, kRedo };
 
 // What a tool draws over the picture: in shadow space (projected by the window) or in pixels.
 struct Overlay {

@@ -2,11 +2,14 @@
 #include "io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cstring>
 #include <string>
+#include <system_error>
 
 #include "core/error.hpp"
 
@@ -69,6 +72,28 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view t
     fail(path, "renaming the temporary file over it failed");
   }
   sync_folder(dir);
+}
+
+int remove_stale_temporaries(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const std::string prefix = path.filename().string() + ".tmp-";
+  std::error_code ec;
+  fs::directory_iterator it(path.parent_path().empty() ? fs::path(".") : path.parent_path(), ec);
+  if (ec) return 0;
+  int removed = 0;
+  for (const fs::directory_entry& e : it) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const char* digits = name.c_str() + prefix.size();
+    const char* end = name.c_str() + name.size();
+    long pid = 0;
+    const auto [rest, err] = std::from_chars(digits, end, pid);
+    if (err != std::errc() || rest != end || pid <= 0) continue;
+    // Still running (or not ours to ask about): it may be writing now.
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;
+    if (fs::remove(e.path(), ec)) ++removed;
+  }
+  return removed;
 }
 
 }  // namespace s4d

@@ -12,4 +12,8 @@ namespace s4d {
 // untouched. `keep` older versions are kept (FILE.1 the newest of them).
 void write_file_atomically(const std::filesystem::path& path, std::string_view text, int keep = 0);
 
+// Removes the temporaries (FILE.tmp-PID) that writers killed mid-write left beside `path`, those of
+// processes no longer running; returns how many. Never throws (what cannot be removed stays).
+int remove_stale_temporaries(const std::filesystem::path& path);
+
 }  // namespace s4d

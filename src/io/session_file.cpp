@@ -1,5 +1,5 @@
 // The session's JSON: {"shadow4d_session": version, "scene": {...}, "simulation": {...},
-// "view": {...}, "tool", "history": [...], "history_head", "clean_exit"}.
+// "view": {...}, "tool", "tool_settings": {...}, "history": [...], "history_head", "clean_exit"}.
 #include "io/session_file.hpp"
 
 #include <cmath>
@@ -44,7 +44,8 @@ std::string session_text(const SessionFile& s) {
   root["scene"] = Json::parse(scene_text(s.scene, "session.s4d", ObjectStorage::kInline));
   const SimulationState& sim = s.simulation;
   root["simulation"] = {{"dim", sim.dim},           {"positions", sim.positions}, {"velocities", sim.velocities},
-                        {"pinned", sim.pinned},     {"time", sim.time},           {"playing", sim.playing}};
+                        {"pinned", sim.pinned},     {"held", sim.held},
+                        {"time", sim.time},         {"playing", sim.playing}};
   Json base = Json::array();
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) base.push_back(s.view.base_frame.matrix()(r, k));
@@ -52,6 +53,9 @@ std::string session_text(const SessionFile& s) {
   root["view"] = {{"angles", s.view.angles}, {"base_frame", base},
                   {"trackball", {q.w(), q.x(), q.y(), q.z()}}, {"zoom", s.view.zoom}};
   root["tool"] = s.tool;
+  root["tool_settings"] = Json::object();
+  for (const auto& [k, v] : s.tool_settings)
+    if (std::isfinite(v)) root["tool_settings"][k] = v;
   root["history"] = s.history;
   root["history_head"] = s.history_head;
   root["clean_exit"] = s.clean_exit;
@@ -79,7 +83,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (version < 1 || version != std::floor(version)) c.fail("shadow4d_session", "not a version number");
   for (const auto& [k, v] : root.items())
     if (k != "shadow4d_session" && k != "opened" && k != "scene" && k != "simulation" && k != "view" && k != "tool" &&
-        k != "history" && k != "history_head" && k != "clean_exit" && k != "saved_at")
+        k != "tool_settings" && k != "history" && k != "history_head" && k != "clean_exit" && k != "saved_at")
       c.fail(k, "unknown key");
   SessionFile s;
   if (root.contains("opened")) {
@@ -102,10 +106,18 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     if (!sim.velocities.empty() && sim.velocities.size() != sim.positions.size())
       c.fail("simulation.velocities", "must have as many values as the positions");
     const std::size_t nv = sim.dim > 0 ? sim.positions.size() / static_cast<std::size_t>(sim.dim) : 0;
-    for (double v : c.numbers(j.value("pinned", Json::array()), "simulation.pinned")) {
-      if (v < 0 || v >= static_cast<double>(nv) || v != std::floor(v)) c.fail("simulation.pinned", "vertex " + format_double(v) + " is not one of the " + std::to_string(nv));
-      sim.pinned.push_back(static_cast<int>(v));
-    }
+    const auto vertices = [&](const char* key) {
+      std::vector<int> out;
+      const std::string where = std::string("simulation.") + key;
+      for (double v : c.numbers(j.value(key, Json::array()), where)) {
+        if (v < 0 || v >= static_cast<double>(nv) || v != std::floor(v))
+          c.fail(where, "vertex " + format_double(v) + " is not one of the " + std::to_string(nv));
+        out.push_back(static_cast<int>(v));
+      }
+      return out;
+    };
+    sim.pinned = vertices("pinned");
+    sim.held = vertices("held");
     sim.time = c.number(j.value("time", Json(0)), "simulation.time");
     if (j.contains("playing")) {
       if (!j["playing"].is_boolean()) c.fail("simulation.playing", "must be true or false");
@@ -118,6 +130,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     const auto a = c.numbers(j.value("angles", Json::array({0, 0, 0, 0, 0, 0})), "view.angles");
     if (a.size() != 6) c.fail("view.angles", "must be 6 angles (xy xz xw yz yw zw)");
     for (int i = 0; i < 6; ++i) s.view.angles[static_cast<std::size_t>(i)] = static_cast<float>(a[static_cast<std::size_t>(i)]);
+    s.view.base_frame = s.scene.frame;  // version 1 wrote the composed frame alone
     if (j.contains("base_frame")) {
       const auto m = c.numbers(j["base_frame"], "view.base_frame");
       if (m.size() != 16) c.fail("view.base_frame", "must be 16 numbers (a 4 x 4 rotation, row by row)");
@@ -135,6 +148,11 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (root.contains("tool")) {
     if (!root["tool"].is_string()) c.fail("tool", "must be a string");
     s.tool = root["tool"].get<std::string>();
+  }
+  if (root.contains("tool_settings")) {
+    const Json& j = root["tool_settings"];
+    if (!j.is_object()) c.fail("tool_settings", "must be an object of named numbers");
+    for (const auto& [k, v] : j.items()) s.tool_settings[k] = c.number(v, "tool_settings." + k);
   }
   if (root.contains("history")) {
     if (!root["history"].is_array()) c.fail("history", "must be an array of labels");

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,13 +13,15 @@
 
 namespace s4d {
 
-inline constexpr int kSessionVersion = 1;
+// 1: the first; 2 adds the tool settings and the held vertices (a version 1 file opens without them).
+inline constexpr int kSessionVersion = 2;
 
 struct SimulationState {
   int dim = 0;                     // 3 or 4; 0: nothing was simulated
   std::vector<double> positions;   // nv × dim, the World's vertices in body order
   std::vector<double> velocities;  // nv × dim
   std::vector<int> pinned;         // vertices held where they are
+  std::vector<int> held;           // vertices the hand held on its rubber band when saved
   double time = 0;                 // s simulated
   bool playing = false;
 };
@@ -38,6 +41,7 @@ struct SessionFile {
   SimulationState simulation;
   SessionView view;
   std::string tool;                // the active tool's name
+  std::map<std::string, double> tool_settings;  // "group.setting" -> value (app/tool_settings.hpp)
   std::vector<std::string> history;  // labels of the undoable steps, oldest first
   int history_head = 0;            // how many of them are done (the rest were undone)
   bool clean_exit = true;          // an autosave says false until the app has quit normally

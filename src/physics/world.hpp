@@ -2,6 +2,7 @@
 // damping, pins and pulled vertices, tool forces, collision avoidance that never lets surfaces
 // pass through each other, and roll-back of exploding steps. A step allocates nothing.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -69,6 +70,10 @@ class World {
 
   // Replaces the state (e.g. restoring a snapshot); sizes must match. Throws s4d::Error.
   void set_state(std::span<const Vec<D>> x, std::span<const Vec<D>> v);
+  // The simulated time goes on from a restored session's (s; non-finite or negative is ignored).
+  void set_time(double seconds) {
+    if (std::isfinite(seconds) && seconds >= 0) data_.time = seconds;
+  }
   // Replaces the model (new parameters, a contact layer fitted to the current gaps) keeping the
   // state, pins, targets and tool forces; the vertex count must match. Throws s4d::Error.
   void set_model(Model<D> model);

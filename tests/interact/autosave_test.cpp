@@ -67,6 +67,31 @@ TEST(SessionSave, TheStateComesBackInAnotherSession) {
     EXPECT_NEAR(b.snapshot()->points[i], a.snapshot()->points[i], 1e-5) << i;
   EXPECT_EQ(b.snapshot()->status.pinned, 1);
   EXPECT_TRUE(b.snapshot()->status.playing) << "it was playing when saved";
+  EXPECT_NEAR(b.snapshot()->status.sim_time, 0.201, 1e-9) << "the simulated time goes on from the saved";
+}
+
+// A vertex held on the rubber band when the session was saved: written as held, and taken up
+// pinned where it was (no hand holds it now), so the shape the hand held does not spring back.
+TEST(SessionSave, AVertexHeldWhenSavedComesBackPinnedWhereItWas) {
+  Session a;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  a.open(falling_cloth(), o);
+  a.set_mapping(DeviceMapping::fit(Vec3::Zero(), 1, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
+  a.send(live_grab(5, 0, Vec3::Zero()));
+  a.loop()->run_ticks(50);
+  a.refresh();
+  ASSERT_EQ(a.snapshot()->status.held_vertex, 5);
+  const SessionFile saved = parse_session(session_text(a.save_state()), "t.s4d");
+  EXPECT_EQ(saved.simulation.held, std::vector<int>{5});
+  Session b;
+  b.open_saved(saved, "t.s4d", o);
+  b.loop()->run_ticks(1);
+  b.refresh();
+  EXPECT_TRUE(b.pinned(5));
+  EXPECT_LT(b.snapshot()->status.held_vertex, 0);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(b.snapshot()->points[5 * 4 + k], saved.simulation.positions[5 * 4 + k]);
 }
 
 TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
@@ -123,6 +148,7 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> wait_ms(300, 1200);
   int restored = 0;
+  double last_time = -1, last_saved_at = 0;  // the autosave the previous run left
   const int kills = std::getenv("S4D_KILLS") ? std::atoi(std::getenv("S4D_KILLS")) : 50;
   for (int k = 0; k < kills; ++k) {
     const pid_t pid = fork();
@@ -161,9 +187,20 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
       EXPECT_LT(age, kInterval + allowance) << "run " << k;
     }
     EXPECT_GE(age, -0.05);
+    // Each run took up the last one's work: a new autosave goes on from its simulated time.
+    if (last_time >= 0 && f.saved_at > last_saved_at) {
+      EXPECT_GE(f.simulation.time, last_time) << "run " << k << " restored the work it was left";
+    }
+    last_time = f.simulation.time;
+    last_saved_at = f.saved_at;
     ++restored;
   }
   EXPECT_GE(restored, kills * 3 / 4) << "most runs got to an autosave";
+  EXPECT_GT(last_time, 2.0) << "the simulated time adds up over the runs (each ran 0.3-1.2 s)";
+  // What the kills left half-written was never renamed into place, and the next start cleared it.
+  int temporaries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) temporaries += e.path().string().find(".tmp-") != std::string::npos;
+  EXPECT_LE(temporaries, 1) << "at most the last run's";
 }
 
 }  // namespace

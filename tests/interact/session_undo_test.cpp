@@ -2,6 +2,9 @@
 // each come back as one step; the running simulation pauses at the restored state.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "interact/grab_tool.hpp"
 #include "interact/session.hpp"
 #include "shape/generators.hpp"
@@ -120,6 +123,75 @@ TEST(SessionUndo, TheViewComesBackThroughTheWindowsHooks) {
   EXPECT_EQ(angles[2], 0);
   ASSERT_TRUE(s.redo());
   EXPECT_EQ(angles[2], 45);
+}
+
+
+// As in the window: the loop and the physics on their own threads. Undo, redo and undo again as
+// fast as keys go: until the simulation shows a handed-over state, the scene keeps it (refresh
+// copies nothing over it), so each key acts on the state the one before made, and the last one
+// lands whatever the threads' timing.
+TEST(SessionUndo, QuickUndoRedoUndoOnRunningThreadsEndsWhereTheDragStarted) {
+  Session s;
+  SessionOptions o;
+  o.realtime_priority = false;
+  s.open(cloth(), o);
+  ASSERT_TRUE(s.simulating());
+  s.set_mapping(DeviceMapping::fit(Vec3::Zero(), 1, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
+  const auto wait_for = [&](const auto& done) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    do {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      s.refresh();
+    } while (!done() && std::chrono::steady_clock::now() < until);
+    return done();
+  };
+  ASSERT_TRUE(wait_for([&] { return s.snapshot() && s.snapshot()->status.sim_steps > 20; }));
+  s.send(live_command(LiveCode::kPause));
+  ASSERT_TRUE(wait_for([&] { return !s.snapshot()->status.playing; }));
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  s.refresh();
+  const std::vector<double> before = s.snapshot()->points;
+  s.send(live_command(LiveCode::kPlay));
+
+  GrabTool tool;
+  ToolInput in;
+  in.view.eye = Vec3(0.07, 0.07, 5);
+  in.view.ray = Vec3(0, 0, -1);
+  ASSERT_TRUE(tool.press(in, s));
+  for (int i = 1; i <= 30; ++i) {
+    in.view.eye = Vec3(0.07, 0.07 + 0.01 * i, 5);
+    tool.drag(in, s);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    s.refresh();
+  }
+  ASSERT_TRUE(wait_for([&] { return s.held(); }));
+  tool.release(in, s);
+
+  ASSERT_TRUE(s.undo());
+  s.refresh();
+  // Landed or not, the scene shows the undone shape (a stale snapshot is not copied over it).
+  const auto scene_off = [&] {
+    const auto& vs = std::get<Surface<4>>(s.scene().objects[0].shape).vertices;
+    double off = 0;
+    for (std::size_t i = 0; i < vs.size(); ++i)
+      for (int k = 0; k < 4; ++k) off = std::max(off, std::abs(vs[i][k] - before[4 * i + static_cast<std::size_t>(k)]));
+    return off;
+  };
+  EXPECT_LT(scene_off(), 0.02);
+  ASSERT_TRUE(s.redo());
+  s.refresh();
+  ASSERT_TRUE(s.undo());
+  ASSERT_TRUE(wait_for([&] { return !s.state_pending(); })) << "the state reached the simulation";
+  EXPECT_FALSE(s.snapshot()->status.playing);
+  EXPECT_LT(s.snapshot()->status.held_vertex, 0) << "the hand let go of the restored world";
+  const std::vector<double> undone = s.snapshot()->points;
+  ASSERT_EQ(undone.size(), before.size());
+  double off = 0;
+  for (std::size_t i = 0; i < undone.size(); ++i) off = std::max(off, std::abs(undone[i] - before[i]));
+  EXPECT_LT(off, 0.02) << "back where the drag started";
+  // The scene the window draws is the snapshot's again.
+  s.refresh();
+  EXPECT_EQ(s.save_state().simulation.positions, undone);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -112,11 +114,32 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
+// Version 2 adds the tool settings and the vertices the hand held.
+TEST(SessionFile, AVersionTwoFileOpensWithItsToolSettingsAndHeldVertices) {
+  const SessionFile s = read_session(fs::path(S4D_TEST_DATA) / "io" / "sessions" / "v2.s4d");
+  EXPECT_EQ(s.simulation.pinned, std::vector<int>{2});
+  EXPECT_EQ(s.simulation.held, std::vector<int>{1});
+  EXPECT_EQ(s.tool, "Sketch a ribbon");
+  EXPECT_EQ(s.tool_settings.at("ribbon.width"), 0.125);
+  EXPECT_EQ(s.tool_settings.at("hand.K"), 250);
+  EXPECT_TRUE(read_session(fs::path(S4D_TEST_DATA) / "io" / "sessions" / "v1.s4d").tool_settings.empty());
+  // Written and read back unchanged.
+  const SessionFile back = parse_session(session_text(s), "back.s4d");
+  EXPECT_EQ(back.tool_settings, s.tool_settings);
+  EXPECT_EQ(back.simulation.held, s.simulation.held);
+  EXPECT_NE(error_of(R"({"shadow4d_session": 2, "scene": {"version": 1}, "tool_settings": {"hand.K": "x"}})")
+                .find("tool_settings.hand.K: must be a number"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"shadow4d_session": 2, "scene": {"version": 1}, "simulation": {"dim": 3, "positions": [1, 2, 3], "held": [4]}})")
+                .find("simulation.held: vertex 4 is not one of the 1"),
+            std::string::npos);
+}
+
 TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
   std::string good = session_text(sample());
   std::string newer = good;
-  newer.replace(newer.find("\"shadow4d_session\": 1"), 21, "\"shadow4d_session\": 7");
-  EXPECT_NE(error_of(newer).find("written by a newer shadow4d (version 7); this one reads 1"), std::string::npos)
+  newer.replace(newer.find("\"shadow4d_session\": 2"), 21, "\"shadow4d_session\": 7");
+  EXPECT_NE(error_of(newer).find("written by a newer shadow4d (version 7); this one reads 2"), std::string::npos)
       << error_of(newer);
   EXPECT_NE(error_of(good.substr(0, good.size() / 2)).find("damaged or not JSON"), std::string::npos);
   EXPECT_NE(error_of(R"({"version": 1})").find("this is no session file"), std::string::npos);
@@ -142,6 +165,28 @@ TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
   EXPECT_NE(error_of(R"({"shadow4d_session": 1, "scene": {"version": 1}, "simulation": {"dim": 1e300}})")
                 .find("simulation.dim: must be 0, 3 or 4"),
             std::string::npos);
+}
+
+// A writer killed between creating its temporary and the rename leaves FILE.tmp-PID: the next
+// start removes those of processes that are gone, and never one a running writer may still own.
+TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved) {
+  const fs::path d = temp_dir("stale");
+  const fs::path f = d / "auto.s4d";
+  write_file_atomically(f, "whole");
+  const pid_t gone = fork();
+  ASSERT_GE(gone, 0);
+  if (gone == 0) _exit(0);
+  int status = 0;
+  waitpid(gone, &status, 0);  // reaped: its pid names no process now
+  for (const std::string& name : {"auto.s4d.tmp-" + std::to_string(gone), "auto.s4d.tmp-" + std::to_string(getpid()),
+                                  std::string("auto.s4d.tmp-x1"), std::string("other.s4d.tmp-") + std::to_string(gone)})
+    std::ofstream(d / name) << "half";
+  EXPECT_EQ(remove_stale_temporaries(f), 1);
+  EXPECT_FALSE(fs::exists(d / ("auto.s4d.tmp-" + std::to_string(gone))));
+  EXPECT_TRUE(fs::exists(d / ("auto.s4d.tmp-" + std::to_string(getpid())))) << "a live writer's";
+  EXPECT_TRUE(fs::exists(d / "auto.s4d.tmp-x1")) << "not a temporary of ours";
+  EXPECT_TRUE(fs::exists(d / ("other.s4d.tmp-" + std::to_string(gone)))) << "another file's";
+  EXPECT_EQ(read_text_file(f), "whole");
 }
 
 TEST(AtomicFile, ReplacesWholeKeepsVersionsAndLeavesTheOldFileOnFailure) {
