@@ -315,7 +315,9 @@ void soak(const SoakArgs& a) {
       t.problems.push_back(std::string("round ") + std::to_string(k) + ": " + e.what());
     }
   }
-  const bool ok = t.pass_throughs == 0 && t.nonfinite_to_device == 0 && t.nonfinite_in_files == 0;
+  // A problem (a scenario that did not simulate, an autosave that did not read back, a round that
+  // threw) fails the soak as surely as a pass-through: each is work a user would have lost.
+  const bool ok = t.pass_throughs == 0 && t.nonfinite_to_device == 0 && t.nonfinite_in_files == 0 && t.problems.empty();
   if (a.json) {
     nlohmann::ordered_json j{{"pass", ok}, {"minutes", a.minutes}, {"rounds", t.rounds}, {"steps", t.steps},
                              {"grabs", t.grabs}, {"turns", t.turns}, {"pins", t.pins}, {"explorations", t.explorations},
