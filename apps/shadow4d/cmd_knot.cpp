@@ -259,20 +259,26 @@ void setup(CLI::App& knot) {
   });
 
   static Common ca;
-  static std::string file_b;
+  static std::string file_b, user_answer;
   auto* compare = knot.add_subcommand("compare", "are two curves the same knot? (the user-study exercise)");
   add_common(compare, ca, false);
   compare->add_option("other", file_b, "the second curve")->required();
+  compare->add_option("--answer", user_answer, "your answer, judged by the invariants: same or different")
+      ->check(CLI::IsMember({"same", "different"}));
   compare->callback([] {
     const auto r = same_knot(load_knot_curve(ca.file), load_knot_curve(file_b));
+    std::optional<SameKnotJudgement> judged;
+    if (!user_answer.empty()) judged = judge_same_answer(r, user_answer == "same");
     if (ca.json_out) {
-      std::cout << json{{"answer", same_answer_name(r.answer)},
-                        {"mirror_images", r.mirror_images},
-                        {"reason", r.reason},
-                        {"a", info_json(r.a)},
-                        {"b", info_json(r.b)}}
-                       .dump(2)
-                << "\n";
+      json j{{"answer", same_answer_name(r.answer)},
+             {"mirror_images", r.mirror_images},
+             {"reason", r.reason},
+             {"a", info_json(r.a)},
+             {"b", info_json(r.b)}};
+      if (judged) j["judgement"] = {{"decided", judged->decided}, {"right", judged->right}, {"text", judged->text}};
+      std::cout << j.dump(2) << "\n";
+    } else if (judged) {
+      std::cout << judged->text << "\n";
     } else {
       std::cout << same_answer_name(r.answer) << ": " << r.reason << "\n";
     }
@@ -311,13 +317,25 @@ void setup(CLI::App& knot) {
   });
 
   static Common uc;
+  static int try_crossing = 0;
   auto* unknotting = knot.add_subcommand(
       "unknotting", "for each crossing of the diagram in a view, whether changing it unknots the knot");
   add_common(unknotting, uc);
+  unknotting->add_option("--try", try_crossing,
+                         "the exercise: only the verdict on changing this crossing (labels as in `knot code`)")
+      ->check(CLI::PositiveNumber);
   unknotting->callback([] {
     const Curve<3> c = load_knot_curve(uc.file);
     const UnknottingReport r =
         unknotting_crossings(c, uc.view.empty() ? std::nullopt : std::optional(parse_view(uc.view)));
+    if (try_crossing > 0) {
+      const std::string verdict = unknotting_verdict(r, try_crossing);
+      if (verdict.empty())
+        throw Error("the diagram has no crossing " + std::to_string(try_crossing) + " (it has " +
+                    std::to_string(r.crossings.size()) + ")");
+      std::cout << verdict << "\n";
+      return;
+    }
     if (uc.json_out) {
       json cs = json::array();
       for (const auto& x : r.crossings)
@@ -339,6 +357,43 @@ void setup(CLI::App& knot) {
       std::cout << "crossing " << x.label << ": "
                 << (x.unknots ? "unknots it" : "does not unknot it (gives " + x.result + ")") << "\n";
     std::cout << r.unknotting.size() << " of " << r.crossings.size() << " crossing changes unknot it\n";
+  });
+
+  // The user-study exercises, headless: the GUI's "New pair" and "New knot".
+  static std::string exercise_kind, exercise_out, exercise_out_b;
+  static unsigned exercise_seed = 1;
+  static bool exercise_reveal = false;
+  auto* exercise = knot.add_subcommand(
+      "exercise", "make an exercise: same (a pair for `knot compare --answer`) or unknot (a knot of "
+                  "unknotting number one for `knot unknotting --try N`)");
+  exercise->add_option("kind", exercise_kind, "same or unknot")
+      ->required()
+      ->check(CLI::IsMember({"same", "unknot"}));
+  exercise->add_option("--seed", exercise_seed, "which exercise (the same seed, the same exercise)")->capture_default_str();
+  exercise->add_option("--out", exercise_out, "where to write the knot (same: knot A)")->required();
+  exercise->add_option("--out-b", exercise_out_b, "same: where to write knot B");
+  exercise->add_flag("--reveal", exercise_reveal, "say which table knots they are");
+  exercise->callback([] {
+    if (exercise_kind == "same") {
+      if (exercise_out_b.empty()) throw Error("knot exercise same needs --out-b for knot B");
+      const SameKnotExercise e = make_same_knot_exercise(exercise_seed);
+      write_shape_file(e.a, exercise_out);
+      write_shape_file(e.b, exercise_out_b);
+      std::cout << "knot A -> " << exercise_out << ", knot B -> " << exercise_out_b
+                << " (beside it, turned). Are they the same knot? Answer with: shadow4d knot compare "
+                << exercise_out << " " << exercise_out_b << " --answer same|different\n";
+      if (exercise_reveal) std::cout << "knot A is " << e.names.a << ", knot B is " << e.names.b << "\n";
+      return;
+    }
+    const std::string name = pick_unknotting_exercise(exercise_seed);
+    const Curve<3> c = make_table_knot(name);
+    write_shape_file(c, exercise_out);
+    const KnotDiagram d = diagram_from_curve(c, Frame<3>());
+    std::cout << "a knot of unknotting number one -> " << exercise_out << " (" << d.crossing_count()
+              << " crossings in its own view; Gauss code " << d.gauss_code()
+              << "). Which crossing's change unknots it? Answer with: shadow4d knot unknotting " << exercise_out
+              << " --try N\n";
+    if (exercise_reveal) std::cout << "it is " << name << "\n";
   });
 
   static std::string make_name, make_out;
@@ -562,7 +617,8 @@ void setup(CLI::App& knot) {
 
 const CommandRegistrar kKnot(
     "knot",
-    "knot engine: identify, info, code, compare, unknotting, make, relax, flip, resample, sketch, smooth-depth",
+    "knot engine: identify, info, code, compare, unknotting, exercise, make, relax, flip, resample, sketch, "
+    "smooth-depth",
     setup);
 
 }  // namespace

@@ -3,8 +3,11 @@
 #include "knots/knot_exercises.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <random>
 
 #include "core/error.hpp"
+#include "knots/knot_table.hpp"
 #include "knots/regina_link.hpp"
 
 namespace s4d {
@@ -220,6 +223,92 @@ UnknottingReport unknotting_crossings(const Curve<3>& curve, const std::optional
     r.crossings.push_back(std::move(c));
   }
   return r;
+}
+
+SameKnotJudgement judge_same_answer(const SameKnotAnswer& tool, bool user_says_same) {
+  SameKnotJudgement j;
+  if (tool.answer == SameAnswer::kCannotTell) {
+    j.text = "The tool cannot tell either: " + tool.reason + ".";
+    return j;
+  }
+  j.decided = true;
+  const bool same = tool.answer == SameAnswer::kSame;
+  j.right = same == user_says_same;
+  j.text = std::string(j.right ? "Right" : "Wrong") + ": they are " + (same ? "the same knot" : "different") +
+           " (" + tool.reason + ").";
+  return j;
+}
+
+const std::vector<SameKnotPair>& same_knot_exercise_pairs() {
+  // Mirror images of chiral and of amphichiral knots, redrawings, and look-alikes: 5_1 and 10_132
+  // share their Jones polynomial, 6_1 and 9_46 their Alexander polynomial.
+  static const std::vector<SameKnotPair> pairs = {
+      {"3_1", "3_1 mirror", false}, {"3_1", "3_1", true},          {"4_1", "4_1 mirror", true},
+      {"5_1", "5_2", false},        {"5_2", "5_2 mirror", false},  {"5_1", "10_132", false},
+      {"6_1", "9_46", false},       {"6_2", "6_2", true},          {"6_3", "6_3 mirror", true},
+      {"7_4", "7_4 mirror", false}, {"7_7", "7_6", false},         {"8_3", "8_3 mirror", true},
+  };
+  return pairs;
+}
+
+void place_beside(const Curve<3>& a, Curve<3>& b) {
+  auto box = [](const Curve<3>& c) {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const auto& pl : c.components)
+      for (const Vec3& p : pl.points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    return std::pair{lo, hi};
+  };
+  const auto [alo, ahi] = box(a);
+  const auto [blo, bhi] = box(b);
+  if (!alo.allFinite() || !ahi.allFinite() || !blo.allFinite() || !bhi.allFinite()) return;
+  const double gap = 0.5 * std::max((ahi - alo).maxCoeff(), (bhi - blo).maxCoeff());
+  Vec3 shift = 0.5 * (alo + ahi) - 0.5 * (blo + bhi);
+  shift.x() = ahi.x() + gap - blo.x();
+  for (auto& pl : b.components)
+    for (Vec3& p : pl.points) p += shift;
+}
+
+SameKnotExercise make_same_knot_exercise(unsigned seed) {
+  std::mt19937 rng(seed);
+  const auto& pairs = same_knot_exercise_pairs();
+  SameKnotExercise e;
+  e.names = pairs[std::uniform_int_distribution<std::size_t>(0, pairs.size() - 1)(rng)];
+  e.a = make_table_knot(e.names.a);
+  e.b = make_table_knot(e.names.b);
+  // A turn away from the table's own picture, so that the same knot is drawn otherwise.
+  std::normal_distribution<double> g;
+  const Mat<3> turn = Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized().toRotationMatrix();
+  for (auto& pl : e.b.components)
+    for (Vec3& p : pl.points) p = turn * p;
+  place_beside(e.a, e.b);
+  return e;
+}
+
+const std::vector<std::string>& unknotting_exercise_knots() {
+  static const std::vector<std::string> knots = {"3_1", "4_1", "5_2", "6_1", "6_2", "6_3",
+                                                 "7_2", "7_6", "7_7", "8_1"};
+  return knots;
+}
+
+std::string pick_unknotting_exercise(unsigned seed) {
+  std::mt19937 rng(seed);
+  const auto& knots = unknotting_exercise_knots();
+  const std::string name = knots[std::uniform_int_distribution<std::size_t>(0, knots.size() - 1)(rng)];
+  return std::bernoulli_distribution(0.5)(rng) ? name + " mirror" : name;
+}
+
+std::string unknotting_verdict(const UnknottingReport& r, int label) {
+  std::string others;
+  for (int l : r.unknotting) others += (others.empty() ? "" : ", ") + std::to_string(l);
+  for (const CrossingChangeResult& c : r.crossings) {
+    if (c.label != label) continue;
+    return std::string(c.unknots ? "Yes: " : "No: ") + "changing crossing " + std::to_string(label) + " of " +
+           r.knot + " gives " + c.result + ". " +
+           (r.is_unknot            ? "It is the unknot already."
+            : r.unknotting.empty() ? "No single change of this diagram unknots it."
+                                   : "The crossings whose change unknots it: " + others + ".");
+  }
+  return {};
 }
 
 int nearest_crossing(const UnknottingReport& report, const Vec2& point) {

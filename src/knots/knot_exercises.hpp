@@ -29,6 +29,35 @@ struct SameKnotAnswer {
 // does not depend on the orientation of their components. Throws Error for invalid curves.
 SameKnotAnswer same_knot(const Curve<3>& a, const Curve<3>& b, const KnotInfoOptions& options = {});
 
+// The user's answer to "are these the same knot?" judged by the tool's.
+struct SameKnotJudgement {
+  bool decided = false;  // the invariants decide (same or different); else the user cannot be judged
+  bool right = false;    // the user's answer agrees with the decided one
+  std::string text;      // "Right: they are different: ...", "Wrong: ...", "The tool cannot tell: ..."
+};
+SameKnotJudgement judge_same_answer(const SameKnotAnswer& tool, bool user_says_same);
+
+// A pair for the exercise, from the table: the second is drawn turned, so that the two diagrams
+// differ even when the knots are the same (mirror images, redrawings, look-alikes with equal
+// Jones or Alexander polynomials).
+struct SameKnotPair {
+  std::string a, b;
+  bool same = false;  // the truth, from the tables (the tests hold same_knot to it)
+};
+const std::vector<SameKnotPair>& same_knot_exercise_pairs();
+
+// The pair `seed` picks (any seed; the same seed, the same pair) as two curves: the second turned
+// by a rotation the seed picks and placed beside the first along x, apart by half their size.
+struct SameKnotExercise {
+  SameKnotPair names;
+  Curve<3> a, b;
+};
+SameKnotExercise make_same_knot_exercise(unsigned seed);
+
+// Moves `b` along x so that it starts beyond where `a` ends (by half the larger of their sizes),
+// centred on a's middle in y and z: two knots side by side. Nothing moves when either is empty.
+void place_beside(const Curve<3>& a, Curve<3>& b);
+
 struct CrossingChangeResult {
   int label = 0;              // the crossing, 1-based as in the diagram's codes (`knot code`)
   Vec2 point = Vec2::Zero();  // where it is in the view's shadow coordinates
@@ -51,6 +80,16 @@ struct UnknottingReport {
 // Error for invalid curves and for links (a crossing change of a knot is asked for).
 UnknottingReport unknotting_crossings(const Curve<3>& curve,
                                       const std::optional<Frame<3>>& view = std::nullopt);
+
+// Knots whose unknotting number is one, drawn by the table so that one crossing of their diagram
+// in the curve's own view unknots them (the tests check each).
+const std::vector<std::string>& unknotting_exercise_knots();
+// The knot `seed` picks among them (any seed), as make_table_knot draws it.
+std::string pick_unknotting_exercise(unsigned seed);
+
+// The verdict on the user's choice of crossing `label` of report: whether that change unknots it
+// and which crossings would have. Empty when the report has no such crossing.
+std::string unknotting_verdict(const UnknottingReport& report, int label);
 
 // The label of the crossing nearest `point` (shadow coordinates of report.frame), or 0 for none.
 int nearest_crossing(const UnknottingReport& report, const Vec2& point);
