@@ -160,3 +160,139 @@ TEST(CurveExplorerScene, TheHandFeelsTheSpringInDeviceUnitsAndBadInputNoForce) {
 
 }  // namespace
 }  // namespace s4d
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "audio/audio_measure.hpp"
+#include "audio/cue_synth.hpp"
+#include "audio/wav_file.hpp"
+#include "haptics/haptic_loop.hpp"
+#include "haptics/simulated_arm.hpp"
+
+namespace s4d {
+namespace {
+
+double distance_to_image(const Curve<3>& k, const Vec2& q) {
+  const auto& p = k.components[0].points;
+  double best = HUGE_VAL;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec2 a = p[i].head<2>(), b = p[(i + 1) % p.size()].head<2>();
+    const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+    best = std::min(best, (a + t * (b - a) - q).norm());
+  }
+  return best;
+}
+
+struct PushedRun {
+  std::vector<CurveCrossingEvent> events;
+  double hand_off = 0, device_off = 0;  // m: the largest distance from the curve's image, at any tick
+  bool left_component = false;
+  double seconds = 0;
+  std::string gauss;
+};
+
+// The simulated arm held by a hand model that traces the trefoil once round in 8 s, pushed off it
+// sideways by up to `push` metres (five swings), through the real loop at 1 kHz, the navigation
+// spring at `k` N/m.
+PushedRun trace_pushed_off(double k, double push) {
+  const Curve<3> knot = torus_knot(2, 3, 240);
+  const Frame<3> view;
+  auto arm = std::make_unique<SimulatedArm>();
+  SimulatedArm& a = *arm;
+  const DeviceCapabilities caps = arm->capabilities();
+  double size = 0;
+  for (const Vec3& p : knot.components[0].points) size = std::max(size, p.norm());
+  const DeviceMapping mapping = DeviceMapping::fit(Vec3::Zero(), 1.1 * size, Mat<3>::Identity(), caps.workspace_centre(),
+                                                   0.9 * 0.5 * (caps.workspace_max - caps.workspace_min));
+  auto scene = std::make_unique<CurveExplorerScene>(knot, view, mapping);
+  CurveExplorerScene& ex = *scene;
+  ex.params()[CurveExplorerScene::kK].value = k;
+  const auto& pts = knot.components[0].points;
+  const double seconds = 8;
+  auto hand = [&pts, mapping, seconds, push](double t) {
+    const double s = std::clamp(t / seconds, 0.0, 1.0) * static_cast<double>(pts.size());
+    const std::size_t i = static_cast<std::size_t>(s) % pts.size(), j = (i + 1) % pts.size();
+    const Vec3 on = pts[i] + (s - std::floor(s)) * (pts[j] - pts[i]);
+    const Vec2 tangent = (pts[j] - pts[(i + pts.size() - 1) % pts.size()]).head<2>().normalized();
+    const double off = push / mapping.metres_per_unit * std::sin(2 * 3.141592653589793 * 5 * t / seconds);
+    return mapping.to_device(Vec3(on.x() - off * tangent.y(), on.y() + off * tangent.x(), 0));
+  };
+  a.set_position(hand(0));
+  a.set_hand_script(hand);
+  EXPECT_TRUE(ex.place(Vec3(pts[0].x(), pts[0].y(), 0)));
+  HapticLoopConfig cfg;
+  cfg.realtime_priority = false;
+  HapticLoop loop(std::move(arm), std::move(scene), cfg);
+  PushedRun r;
+  for (int tick = 0; tick < 1000 * seconds; ++tick) {
+    loop.run_ticks(1);
+    auto off = [&](const Vec3& device) { return distance_to_image(knot, mapping.to_shadow(device).head<2>()); };
+    r.device_off = std::max(r.device_off, off(a.true_position()) * mapping.metres_per_unit);
+    r.hand_off = std::max(r.hand_off, off(a.hand_target()) * mapping.metres_per_unit);
+    while (auto e = ex.pop_event()) r.events.push_back(*e);
+  }
+  r.left_component = ex.stats().left_component;
+  r.seconds = ex.stats().time;
+  r.gauss = ex.navigation().explorer().gauss_text();
+  return r;
+}
+
+// Navigation (4.3.1): however the hand pushes, the probe keeps to its strand through every crossing
+// and the spring holds the stylus near the curve — a hand 4 mm off leaves it within 2 mm, where
+// without the spring it would follow the hand all the way.
+TEST(CurveExplorerScene, TheSpringHoldsAPushedHandNearTheCurveThroughEveryCrossing) {
+  const Curve<3> knot = torus_knot(2, 3, 240);
+  const PushedRun held = trace_pushed_off(600, 0.004);
+  EXPECT_GT(held.hand_off, 0.0038) << "the hand model does push 4 mm off";
+  EXPECT_LT(held.device_off, 0.5 * held.hand_off) << held.device_off;
+  EXPECT_LT(held.device_off, 0.002);
+  EXPECT_FALSE(held.left_component);
+  EXPECT_EQ(held.gauss, diagram_from_curve(knot, Frame<3>()).gauss_code()) << "every crossing, in order";
+  ASSERT_EQ(held.events.size(), 6u);
+  const PushedRun free = trace_pushed_off(0, 0.004);
+  EXPECT_GT(free.device_off, 0.85 * free.hand_off) << "without the spring the stylus goes where the hand goes";
+  EXPECT_EQ(free.gauss, held.gauss) << "the probe keeps its strand either way";
+}
+
+// Sound (4.3.2): the exploration's cues written to a WAV and read back are heard in the order the
+// crossings were passed — high pings over, low thuds under, as the knot's Gauss code has them.
+TEST(CurveExplorerScene, TheExplorationsWavHoldsItsOverAndUnderCuesInOrder) {
+  const Curve<3> knot = torus_knot(2, 3, 240);
+  const PushedRun run = trace_pushed_off(600, 0.004);
+  std::vector<CueEvent> cues;
+  for (const auto& e : run.events)
+    cues.push_back({e.time, e.over ? CueKind::crossing_over : CueKind::crossing_under, 1.0f});
+  const auto path = std::filesystem::temp_directory_path() / "s4d_knot_explore_cues.wav";
+  write_wav(path, render_cues(cues, {}, run.seconds), kAudioSampleRate);
+  const WavData wav = read_wav(path);
+  const std::vector<float> x = wav.samples();
+  const int rate = wav.sample_rate;
+  // The cues as the ear finds them: stretches of sound between silences, each called over or under
+  // by where its energy is (the ping near 1.3 kHz, the thud near 200 Hz).
+  std::vector<bool> heard_over;
+  const std::size_t hop = static_cast<std::size_t>(rate / 200);  // 5 ms
+  std::size_t quiet = 100;  // hops of silence before this one
+  for (std::size_t i = 0; i + hop <= x.size(); i += hop) {
+    double e = 0;
+    for (std::size_t n = i; n < i + hop; ++n) e = std::max(e, double(std::abs(x[n])));
+    if (e <= 1e-3) {
+      ++quiet;
+      continue;
+    }
+    if (quiet >= 4) {  // an onset after at least 20 ms of silence
+      const std::span<const float> w(x.data() + i, std::min<std::size_t>(x.size() - i, rate / 20));
+      heard_over.push_back(test::goertzel_power(w, 1318.5, rate) > test::goertzel_power(w, 196, rate));
+    }
+    quiet = 0;
+  }
+  std::vector<bool> expected;
+  std::stringstream code(diagram_from_curve(knot, Frame<3>()).gauss_code());
+  for (std::string item; std::getline(code, item, ',');) expected.push_back(std::stoi(item) > 0);
+  ASSERT_EQ(expected.size(), 6u);
+  EXPECT_EQ(heard_over, expected);
+}
+
+}  // namespace
+}  // namespace s4d
