@@ -33,6 +33,7 @@ int launch_gui(const GuiLaunch& launch) {
   options.autosave = launch.autosave;
   options.autosave_seconds = launch.autosave_seconds;
   options.restore = launch.restore;
+  options.exercise_seed = launch.exercise_seed;
   options.width = launch.width;
   options.height = launch.height;
   return run_gui_app(options);

@@ -14,6 +14,7 @@ struct GuiLaunch {
   std::string autosave;
   double autosave_seconds = 30;
   bool restore = false;
+  unsigned exercise_seed = 0;
   int width = 1280, height = 800;
 };
 // Returns the process exit code.

@@ -22,12 +22,15 @@ int main(int argc, char** argv) {
   app.add_option("--input", gui.input,
                  "GUI: play timed mouse and key events from this file (lines 'FRAME EVENT ARGS': move X Y, "
                  "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, open SPEC, "
-                 "shot FILE, dump FILE, quit)")
+                 "shot FILE, dump FILE, quit, wait: until background work is done)")
       ->group("GUI scripting");
   app.add_option("--autosave", gui.autosave,
                  "GUI: the autosave file (default $XDG_STATE_HOME/shadow4d/autosave.s4d or ~/.local/state/...)");
   app.add_option("--autosave-seconds", gui.autosave_seconds, "GUI: seconds between autosaves (0: none)")
       ->check(CLI::Range(0.0, 1e6));
+  app.add_option("--exercise-seed", gui.exercise_seed,
+                 "GUI: the knot exercises' choices (0: at random; another number: the same every run, e.g. for a class)")
+      ->group("GUI scripting");
   app.add_flag("--restore", gui.restore, "GUI: take up the autosave a crashed or killed run left, without asking");
   app.add_option(
       "--device", gui.device,

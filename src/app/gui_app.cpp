@@ -10,6 +10,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -179,6 +180,15 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
                                        : e.kind == kEventPassedBelow ? CueKind::curve_below
                                        : e.kind == kEventCrossedOver ? CueKind::crossing_over
                                                                      : CueKind::crossing_under);
+  // ... and, asked for, the probe's depth as the pitch of a continuous tone while it explores.
+  if (model.audio) {
+    const HapticSnapshot* snap = session.snapshot();
+    const bool tone = model.depth_tone && snap && snap->status.exploring;
+    model.audio->set_depth_tone(tone);
+    if (tone)
+      model.audio->set_depth(probe_depth_fraction(model.scene(), model.fit, ti.view.toward_eye,
+                                                  model.explore.on_curve(), snap->status.probe_w));
+  }
 }
 
 // The knot explorer's Gauss code, built up as crossings are passed (the paper's students asked for
@@ -207,7 +217,7 @@ void save_shot(const Image& image, const std::string& path, GuiModel& model) {
 
 // The state a scripted test reads back: the simulation's status, the monitor's checks and every
 // vertex where it is now (world coordinates).
-void dump_state(GuiModel& model, const std::string& path) {
+void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path) {
   using Json = nlohmann::ordered_json;
   Json j;
   Session& s = model.session;
@@ -275,6 +285,10 @@ void dump_state(GuiModel& model, const std::string& path) {
                    {"last_name", model.knot.last_name()}};
   }
   j["knot_panel_name"] = model.knot_panel_name;
+  Json knot_panels = Json::object();
+  knots.dump(knot_panels);
+  j["knot_panels"] = knot_panels;
+  j["depth_tone"] = model.depth_tone;
   j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
   j["touch_and_sound_only"] = model.touch_and_sound_only;
   j["sheet"] = model.grab.sheet();
@@ -379,7 +393,7 @@ int run_gui_app(const GuiOptions& options) {
     Renderer renderer;
     Panels panels;
     HapticsWindow haptics;
-    KnotPanels knot_panels;
+    KnotPanels knot_panels(options.exercise_seed);
     GuiModel model;
     model.audio = std::make_unique<AudioPlayer>();
     model.session.capture_view = [&model](DocumentState& d) {
@@ -428,11 +442,16 @@ int run_gui_app(const GuiOptions& options) {
     std::vector<std::string> shots, dumps;
     std::size_t objects_seen = model.scene().objects.size();
     // The input file's clock: it stands still while a restored state (an undo, a redo) is on its
-    // way to the simulation, as a user's next move comes after they see it, whatever the machine.
+    // way to the simulation, as a user's next move comes after they see it, whatever the machine;
+    // and while a `wait` holds for the panels' background work.
     int script_frame = 0, waited = 0;
+    bool waiting = false;
+    std::chrono::steady_clock::time_point wait_start{};
     for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
       glfwPollEvents();
-      if (!model.session.state_pending() || ++waited > kMaxStateWaitFrames) {
+      if (waiting && (!knot_panels.busy() || std::chrono::steady_clock::now() - wait_start > std::chrono::seconds(60)))
+        waiting = false;
+      if (!waiting && (!model.session.state_pending() || ++waited > kMaxStateWaitFrames)) {
         ++script_frame;
         waited = 0;
       }
@@ -441,6 +460,7 @@ int run_gui_app(const GuiOptions& options) {
         else if (e.kind == InputEvent::Kind::shot) shots.push_back(e.text);
         else if (e.kind == InputEvent::Kind::dump) dumps.push_back(e.text);
         else if (e.kind == InputEvent::Kind::quit) model.quit = true;
+        else if (e.kind == InputEvent::Kind::wait) waiting = true, wait_start = std::chrono::steady_clock::now();
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
@@ -486,6 +506,7 @@ int run_gui_app(const GuiOptions& options) {
         tool->overlay(overlay, model.session);
         draw_overlay(overlay, camera, win);
       }
+      knot_panels.overlay(model, camera, win);
       ImGui::Render();
 
       int fw = 0, fh = 0;
@@ -522,7 +543,7 @@ int run_gui_app(const GuiOptions& options) {
       shots.clear();
       if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
       model.knot_panel_name = knot_panels.shown_name();
-      for (const std::string& path : dumps) dump_state(model, path);
+      for (const std::string& path : dumps) dump_state(model, knot_panels, path);
       dumps.clear();
       glfwSwapBuffers(window);
       if (last) break;

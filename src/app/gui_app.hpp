@@ -14,6 +14,7 @@ struct GuiOptions {
   std::string autosave;          // the autosave file; empty: interact/autosave's default
   double autosave_seconds = 30;  // 0: no autosaves
   bool restore = false;          // take up an unfinished run's autosave without asking
+  unsigned exercise_seed = 0;    // the knot exercises' choices: 0 at random, else the same every run
 };
 
 // Returns the process exit code; never throws (errors are shown in the window or printed).

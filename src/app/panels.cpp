@@ -97,6 +97,13 @@ ViewFit fit_of(const Scene& scene) {
   return f;
 }
 
+double probe_depth_fraction(const Scene& scene, const ViewFit& fit, const Vec3& toward_eye, bool on_curve,
+                            double probe_w) {
+  if (!(fit.radius > 0) || !std::isfinite(probe_w)) return 0.5;
+  const double centre = on_curve ? toward_eye.dot(fit.centre.head<3>()) : scene.frame.to_view(fit.centre)(3);
+  return std::clamp(0.5 + 0.5 * (probe_w - centre) / fit.radius, 0.0, 1.0);
+}
+
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
     if (spec.size() > 4 && spec.ends_with(".s4d")) {
@@ -379,7 +386,8 @@ void Panels::view_panel(GuiModel& model, float fps) {
                       "right-click a dot to change that crossing");
   if (v.intersections && model.intersections.computed) {
     ImGui::TextWrapped("%s", intersection_text(model.intersections).c_str());
-    for (const std::string& code : model.intersections.gauss_codes) ImGui::TextWrapped("%s", code.c_str());
+    if (!model.touch_and_sound_only)  // the codes would give the knot away
+      for (const std::string& code : model.intersections.gauss_codes) ImGui::TextWrapped("%s", code.c_str());
   }
   if (model.audio) {
     ImGui::Separator();
@@ -388,6 +396,10 @@ void Panels::view_panel(GuiModel& model, float fps) {
     ImGui::SameLine();
     float volume = model.audio->volume();
     if (ImGui::SliderFloat("volume", &volume, 0.0f, 1.0f, "%.2f")) model.audio->set_volume(volume);
+    ImGui::Checkbox("depth tone", &model.depth_tone);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("while exploring (E), a continuous tone whose pitch follows the probe's depth:\n"
+                        "high where it is near the eye (a knot) or near in w (a surface), low where far");
     ImGui::TextDisabled("%s", model.audio->status().c_str());
   }
   ImGui::End();
@@ -406,11 +418,13 @@ void Panels::scene_panel(GuiModel& model) {
     ImGui::PushID(static_cast<int>(i));
     if (ImGui::SmallButton("x")) remove = static_cast<int>(i);
     ImGui::SameLine();
-    ImGui::TextUnformatted(obj.name.c_str());
+    // A table knot's object is called by its name: not shown when the knot is to be found by touch.
+    const bool hide = model.touch_and_sound_only && std::holds_alternative<Curve<3>>(obj.shape);
+    ImGui::TextUnformatted(hide ? "a curve" : obj.name.c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     ImGui::TextWrapped("%s", describe_shape(obj.shape).c_str());
     ImGui::PopStyleColor();
-    knot_name(obj);
+    if (!hide && !model.hidden_knot_names.count(obj.name)) knot_name(obj);
     ImGui::PopID();
   }
   if (remove >= 0) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "app/file_browser.hpp"
@@ -32,6 +33,12 @@ struct ViewFit {
 };
 ViewFit fit_of(const Scene& scene);
 
+// The explore probe's depth for the depth tone, in [0, 1]: 0 at the far side of the view's ball,
+// 1 at the near side — towards the eye for a knot (probe_w is then its view depth, the eye
+// direction `toward_eye`), towards +w for a surface of R^4 (probe_w its w through scene.frame).
+double probe_depth_fraction(const Scene& scene, const ViewFit& fit, const Vec3& toward_eye, bool on_curve,
+                            double probe_w);
+
 // What the window shows and edits: the document and its live simulation (session), how it is
 // looked at (view), the active tool, and the requests the panels leave for the window loop.
 struct GuiModel {
@@ -50,6 +57,8 @@ struct GuiModel {
   bool touch_and_sound_only = false;  // the picture hidden: the knot explored by feel and ear (H)
   bool open_knot_table = false;  // Create > Knot from the table
   std::string knot_panel_name;   // what the Knot panel names the selected curve (for dumps)
+  std::set<std::string> hidden_knot_names;  // objects whose knot name is an exercise's answer
+  bool depth_tone = false;       // while exploring, a tone whose pitch follows the probe's depth
   std::optional<SessionFile> pending_restore;  // an unfinished run's autosave, offered at start
   std::string autosave_path;
   float time_scale = 1;          // the simulation's, sent live (Simulation panel)

@@ -140,8 +140,11 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       e.kind = word == "open" ? InputEvent::Kind::open : word == "shot" ? InputEvent::Kind::shot : InputEvent::Kind::dump;
     } else if (word == "quit") {
       e.kind = InputEvent::Kind::quit;
+    } else if (word == "wait") {
+      e.kind = InputEvent::Kind::wait;
     } else {
-      fail("unknown event '" + word + "' (move, press, release, scroll, key, key-down, key-up, open, shot, dump, quit)");
+      fail("unknown event '" + word +
+           "' (move, press, release, scroll, key, key-down, key-up, open, shot, dump, quit, wait)");
     }
     if (ls >> arg) fail("unexpected '" + arg + "' at the end of the line");
     out.push_back(e);
@@ -211,7 +214,7 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   }
   for (const InputEvent& e : events) {
     if (e.kind == InputEvent::Kind::open || e.kind == InputEvent::Kind::shot || e.kind == InputEvent::Kind::dump ||
-        e.kind == InputEvent::Kind::quit)
+        e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait)
       commands.push_back(e);
     else
       apply(e);

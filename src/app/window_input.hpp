@@ -13,6 +13,8 @@
 //   20 shot FILE.png       save the window (panels included) after this frame
 //   21 dump FILE.json      write the session's state (simulation, checks, vertex positions)
 //   22 quit
+//   23 wait                the script's frames stop counting until the window's background work
+//                          (naming, making a table knot, checking an exercise) is done (60 s at most)
 // The file's frames count only frames that show the session's latest state: while an undone or
 // redone state is on its way to the simulation, the file waits (gui_app.cpp).
 #pragma once
@@ -29,7 +31,7 @@ struct GLFWwindow;
 namespace s4d {
 
 struct InputEvent {
-  enum class Kind { move, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit };
+  enum class Kind { move, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit, wait };
   Kind kind = Kind::move;
   int frame = 0;      // the file's frame (0 for live events)
   Vec2 at = Vec2::Zero();

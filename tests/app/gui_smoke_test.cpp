@@ -2,6 +2,7 @@
 // under xvfb-run (see tests/CMakeLists.txt); in the plain run without DISPLAY it is skipped.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -426,6 +427,141 @@ TEST(GuiSmoke, AnUnfinishedRunsAutosaveIsOfferedOrWithRestoreTakenUp) {
       EXPECT_FALSE(read_session(autosave).clean_exit);
     }
   }
+}
+
+}  // namespace
+}  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// The knot exercises driven as a user does, through the input file: the panels' buttons are
+// clicked where a first run found them, the window's background work waited for (`wait`), the
+// crossings right-clicked where their numbers are drawn. A fixed --exercise-seed gives every run
+// the same exercise.
+struct KnotRun {
+  std::filesystem::path dir;
+  unsigned seed = 1;
+  nlohmann::json operator()(const std::string& name, const std::vector<std::string>& lines) const {
+    const auto d = dir / name;
+    std::filesystem::create_directories(d);
+    {
+      std::ofstream f(d / "script.txt");
+      int last = 0;
+      for (const std::string& l : lines) {
+        f << l << "\n";
+        last = std::max(last, std::stoi(l));
+      }
+      f << last + 5 << " dump " << (d / "state.json").string() << "\n" << last + 6 << " shot "
+        << (d / "shot.png").string() << "\n" << last + 7 << " quit\n";
+    }
+    GuiOptions options;
+    options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+    std::filesystem::remove(options.autosave);
+    options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json";
+    options.input = (d / "script.txt").string();
+    options.exercise_seed = seed;
+    EXPECT_EQ(run_gui_app(options), 0);
+    return nlohmann::json::parse(std::ifstream(d / "state.json"));
+  }
+};
+
+// "FRAME move X Y", press and release at the middle of a button the dump gave.
+std::vector<std::string> click(int frame, const nlohmann::json& rect, const char* button = "left") {
+  const int x = static_cast<int>((rect[0].get<double>() + rect[2].get<double>()) / 2);
+  const int y = static_cast<int>((rect[1].get<double>() + rect[3].get<double>()) / 2);
+  return {std::to_string(frame) + " move " + std::to_string(x) + " " + std::to_string(y),
+          std::to_string(frame + 3) + " press " + button, std::to_string(frame + 4) + " release " + button};
+}
+
+std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// Unknot it by one crossing change: a knot of unknotting number one from the table, its crossings
+// numbered in the view; a right click on one that unknots it says so (and the Knot panel names
+// the unknot), Ctrl+Z puts it back, a right click on one that does not says which would have.
+TEST(GuiSmoke, TheUnknottingExerciseNumbersTheCrossingsAndJudgesARightClick) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotRun run{std::filesystem::temp_directory_path() / "s4d_gui_unknot_exercise"};
+  const auto start = run("start", {"3 move 100 700"});
+  const auto open = click(5, start["knot_panels"]["buttons"]["Unknot it..."]) + std::vector<std::string>{"12 wait", "20 wait"};
+  const auto shown = run("shown", open);
+  const auto& u = shown["knot_panels"]["unknot"];
+  ASSERT_FALSE(u["knot"].get<std::string>().empty()) << shown["status"];
+  const std::vector<int> yes = u["unknotting"].get<std::vector<int>>();
+  ASSERT_FALSE(yes.empty()) << "a knot of unknotting number one has a crossing to change";
+  ASSERT_GE(u["labels"].size(), yes.size()) << "every crossing's number is drawn";
+  nlohmann::json right, wrong;
+  for (const auto& l : u["labels"]) {
+    const bool unknots = std::find(yes.begin(), yes.end(), l["label"].get<int>()) != yes.end();
+    (unknots ? right : wrong) = l;
+  }
+  ASSERT_FALSE(right.is_null());
+  auto at = [](const nlohmann::json& l) {
+    const double x = l["x"].get<double>(), y = l["y"].get<double>();
+    return nlohmann::json::array({x, y, x, y});
+  };
+  std::vector<std::string> lines = open + click(30, at(right), "right") +
+                                   std::vector<std::string>{"36 wait", "40 dump " + (run.dir / "yes.json").string(),
+                                                            "50 key-down LEFT_CONTROL", "51 key Z", "52 key-up LEFT_CONTROL",
+                                                            "55 wait", "60 dump " + (run.dir / "undone.json").string()};
+  if (!wrong.is_null())
+    lines = lines + click(70, at(wrong), "right") + std::vector<std::string>{"76 wait"};
+  const auto end = run("answered", lines);
+  const auto yes_state = nlohmann::json::parse(std::ifstream(run.dir / "yes.json"));
+  const std::string verdict = yes_state["knot_panels"]["unknot"]["message"];
+  EXPECT_EQ(verdict.rfind("Yes: changing crossing " + std::to_string(right["label"].get<int>()) + " of ", 0), 0u)
+      << verdict;
+  EXPECT_EQ(yes_state["knot_panel_name"].get<std::string>(), "unknot") << "the crossing was changed";
+  const auto undone = nlohmann::json::parse(std::ifstream(run.dir / "undone.json"));
+  EXPECT_FALSE(undone["knot_panels"]["unknot"]["changed"].get<bool>());
+  EXPECT_EQ(undone["knot_panel_name"].get<std::string>().rfind(u["knot"].get<std::string>().substr(0, 3), 0), 0u)
+      << undone["knot_panel_name"];
+  if (!wrong.is_null()) {
+    const std::string no = end["knot_panels"]["unknot"]["message"];
+    EXPECT_EQ(no.rfind("No: changing crossing " + std::to_string(wrong["label"].get<int>()) + " of ", 0), 0u) << no;
+    EXPECT_NE(no.find("The crossings whose change unknots it: "), std::string::npos) << no;
+  }
+}
+
+// Are these the same knot?: a pair from the table side by side, their names hidden until the
+// user answers; the answer is judged right or wrong with the invariants' reason.
+TEST(GuiSmoke, TheSameKnotExerciseJudgesTheUsersAnswer) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotRun run{std::filesystem::temp_directory_path() / "s4d_gui_same_exercise", 2};
+  const auto start = run("start", {"3 move 100 700"});
+  const auto opened = run("opened", click(5, start["knot_panels"]["buttons"]["Are these the same knot?"]));
+  const auto ask = click(5, start["knot_panels"]["buttons"]["Are these the same knot?"]) +
+                   click(15, opened["knot_panels"]["buttons"]["New pair from the table"]) +
+                   std::vector<std::string>{"22 wait", "30 wait"};
+  const auto asked = run("asked", ask);
+  EXPECT_EQ(asked["objects"].get<int>(), 3) << "the trefoil, knot A and knot B";
+  EXPECT_TRUE(asked["knot_panels"]["name_hidden"].get<bool>()) << "the answer is not given away";
+  const auto& pair = asked["knot_panels"]["same"]["pair"];
+  ASSERT_EQ(pair.size(), 3u);
+  const auto answered =
+      run("answered", ask + click(35, asked["knot_panels"]["buttons"]["They are the same"]) +
+                          std::vector<std::string>{"42 wait"});
+  const auto& j = answered["knot_panels"]["same"]["judgement"];
+  ASSERT_TRUE(j["decided"].get<bool>()) << j;
+  EXPECT_EQ(j["right"].get<bool>(), pair[2].get<bool>()) << pair << ": " << j["text"];
+  EXPECT_EQ(j["text"].get<std::string>().rfind(pair[2].get<bool>() ? "Right: " : "Wrong: ", 0), 0u) << j["text"];
+  EXPECT_FALSE(answered["knot_panels"]["name_hidden"].get<bool>()) << "answered: the names are shown";
+}
+
+// Touch and sound only (H): the Knot panel no longer names the knot nor gives its codes.
+TEST(GuiSmoke, TouchAndSoundOnlyHidesTheKnotsName) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotRun run{std::filesystem::temp_directory_path() / "s4d_gui_touch_only"};
+  EXPECT_FALSE(run("picture", {"3 move 100 700"})["knot_panels"]["name_hidden"].get<bool>());
+  const auto hidden = run("hidden", {"3 move 100 700", "5 key H"});
+  EXPECT_TRUE(hidden["touch_and_sound_only"].get<bool>());
+  EXPECT_TRUE(hidden["knot_panels"]["name_hidden"].get<bool>());
 }
 
 }  // namespace
