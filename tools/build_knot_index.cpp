@@ -4,21 +4,28 @@
 // table of DT codes is given, Dowker-Thistlethwaite names for the knots the census leaves unnamed
 // (13 and 14 crossings).
 //   build_knot_index --census knot-census.rga --rolfsen rolfsen_braids.txt --out knot_index.tsv
-//   build_knot_index ... --dt-names FILE   (lines "13n_5018  <numerical DT code>"; '#' comments)
+//   build_knot_index ... --dt-names DIR    (Knotscape's 13A.dts, 13N.dts, ...: see data/knots/README.md)
+//   build_knot_index ... --dt-names FILE   (lines "13n_5018  <DT code>"; '#' comments)
 //   build_knot_index ... --check   (exit 1 if the existing --out file differs)
 #include <link/link.h>
 #include <packet/packet.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
+#include <functional>
 #include <cstring>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "knots/braid_closure.hpp"
 #include "knots/knot_index.hpp"
+#include "knots/knot_info.hpp"
 #include "knots/knot_invariants.hpp"
 #include "knots/polynomial.hpp"
 #include "knots/regina_link.hpp"
@@ -69,6 +76,251 @@ int find_by_rewriting(const regina::Link& from, const std::vector<std::string>& 
     if (found >= 0) return found;
   }
   return -1;
+}
+
+// One code of a table of DT codes: its name ("13n_5018") and the code, numerical or alphabetical.
+struct DtCode {
+  std::string name, code;
+};
+
+// A table of DT codes: a file of "NAME CODE" lines ('#' comments; commas and brackets are ignored),
+// or a directory of Knotscape's tables as the KnotTheory` package ships them (13A.dts, 13N.dts,
+// ...: one alphabetical code per line, line k being 13a_k, 13n_k, ...).
+std::vector<DtCode> read_dt_codes(const std::string& path) {
+  std::vector<DtCode> codes;
+  if (std::filesystem::is_directory(path)) {
+    std::vector<std::pair<std::pair<int, char>, std::filesystem::path>> tables;
+    for (const auto& f : std::filesystem::directory_iterator(path)) {
+      const std::string n = f.path().filename().string();
+      std::size_t i = 0;
+      while (i < n.size() && std::isdigit(static_cast<unsigned char>(n[i]))) ++i;
+      if (i == 0 || i + 5 != n.size() || n.substr(i + 1) != ".dts") continue;
+      const char kind = static_cast<char>(std::tolower(static_cast<unsigned char>(n[i])));
+      if (kind != 'a' && kind != 'n') continue;
+      tables.push_back({{std::stoi(n.substr(0, i)), kind}, f.path()});
+    }
+    std::sort(tables.begin(), tables.end());
+    if (tables.empty()) throw std::runtime_error(path + " holds no Knotscape table (13A.dts, 13N.dts, ...)");
+    for (const auto& [key, file] : tables) {
+      std::ifstream in(file);
+      if (!in) throw std::runtime_error("cannot read " + file.string());
+      std::string line;
+      int k = 0;
+      while (std::getline(in, line)) {
+        line.erase(std::remove_if(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c); }),
+                   line.end());
+        if (line.empty()) continue;
+        codes.push_back({std::to_string(key.first) + key.second + "_" + std::to_string(++k), line});
+      }
+    }
+    return codes;
+  }
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    for (char& ch : line)
+      if (ch == ',' || ch == '[' || ch == ']' || ch == '(' || ch == ')') ch = ' ';
+    std::istringstream fields(line);
+    std::string name, code, v;
+    if (!(fields >> name)) continue;
+    while (fields >> v) code += (code.empty() ? "" : " ") + v;
+    codes.push_back({canonical_knot_name(name), code});
+  }
+  return codes;
+}
+
+// What matching a table of DT codes with the census did.
+struct DtNaming {
+  int confirmed = 0;       // codes whose name the census already gives, checked to agree
+  int named = 0;           // census knots given a DT name
+  int by_homfly = 0;       // ... because HOMFLY-PT left one census knot
+  int by_diagram = 0;      // ... because the code's diagram is a census diagram (equal signatures)
+  int by_rewriting = 0;    // ... because Reidemeister moves from both reach a common diagram
+  int by_covers = 0;       // ... because covers of the knot group left one
+  int by_elimination = 0;  // ... because the others of its HOMFLY-PT class were named before
+  int unresolved = 0;
+};
+
+// Covers of the knot group of index 2..4 with their homology: tells apart many mutants, which
+// HOMFLY-PT cannot.
+std::string covers_of(const regina::Link& link) { return cover_signature(diagram_from_regina(link), 4); }
+
+// Each code is matched, up to mirror image, with the census knot it draws: first the census
+// knots of its crossing number with its HOMFLY-PT polynomial; where several remain (mutants), the
+// code's diagram itself, Reidemeister moves, then covers of the knot group decide, and a code left
+// with one unnamed candidate once the others of its class are named takes it. Both tables list
+// every prime knot of those crossings once up to mirror image, which is what makes that last step
+// sound; the counts printed say whether every census knot was named.
+DtNaming name_from_dt_codes(const std::vector<DtCode>& codes, std::vector<KnotTableEntry>& entries,
+                            const std::vector<regina::Link>& census_links) {
+  DtNaming r;
+  std::unordered_map<std::string, std::size_t> by_dt_name;
+  std::unordered_multimap<std::uint64_t, std::size_t> free_by_key;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const KnotTableEntry& e = entries[i];
+    if (!e.dt_name.empty()) {
+      by_dt_name.emplace(e.dt_name, i);
+      continue;
+    }
+    free_by_key.emplace(e.key, i);
+    if (e.mirror_key != e.key) free_by_key.emplace(e.mirror_key, i);
+  }
+  struct Pending {
+    std::size_t code;
+    regina::Link link;
+    std::vector<std::size_t> candidates;
+  };
+  std::vector<Pending> pending;
+  for (std::size_t c = 0; c < codes.size(); ++c) {
+    regina::Link link;
+    try {
+      link = regina::Link::fromDT(codes[c].code);
+    } catch (const std::exception& ex) {
+      throw std::runtime_error(codes[c].name + ": bad DT code '" + codes[c].code + "' (" + ex.what() + ")");
+    }
+    const int n = static_cast<int>(link.size());
+    const std::uint64_t fp = homfly_fingerprint(homfly_of(link));
+    if (const auto named = by_dt_name.find(codes[c].name); named != by_dt_name.end()) {
+      const KnotTableEntry& e = entries[named->second];
+      if (e.crossings != n || (e.key != fp && e.mirror_key != fp))
+        throw std::runtime_error(codes[c].name + ": the DT code does not draw the census knot of that name (" +
+                                 e.regina_name + "): the table's numbering differs from the census's");
+      ++r.confirmed;
+      continue;
+    }
+    Pending p{c, std::move(link), {}};
+    const auto [lo, hi] = free_by_key.equal_range(fp);
+    for (auto it = lo; it != hi; ++it)
+      if (entries[it->second].crossings == n) p.candidates.push_back(it->second);
+    std::sort(p.candidates.begin(), p.candidates.end());
+    p.candidates.erase(std::unique(p.candidates.begin(), p.candidates.end()), p.candidates.end());
+    pending.push_back(std::move(p));
+  }
+
+  // Codes of one HOMFLY-PT class share their candidates: taken together, so that what is worked
+  // out for a census knot serves the class and is then dropped.
+  std::stable_sort(pending.begin(), pending.end(),
+                   [](const Pending& a, const Pending& b) { return a.candidates < b.candidates; });
+  std::vector<bool> claimed(entries.size(), false);
+  auto name = [&](Pending& p, std::size_t entry, int& how) {
+    entries[entry].dt_name = codes[p.code].name;
+    claimed[entry] = true;
+    p.candidates = {entry};
+    ++how;
+    ++r.named;
+  };
+  std::vector<bool> done(pending.size(), false);
+  // Codes left with one unclaimed candidate take it; repeated until nothing changes.
+  auto propagate = [&](int& how) {
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t k = 0; k < pending.size(); ++k) {
+        if (done[k]) continue;
+        auto& cand = pending[k].candidates;
+        std::erase_if(cand, [&](std::size_t i) { return claimed[i]; });
+        if (cand.size() == 1) {
+          name(pending[k], cand.front(), how);
+          done[k] = changed = true;
+        } else if (cand.empty()) {
+          done[k] = true;
+          ++r.unresolved;
+          std::cerr << "build_knot_index: " << codes[pending[k].code].name << " matches no unnamed census knot\n";
+        }
+      }
+    }
+  };
+  auto left = [&] { return std::count(done.begin(), done.end(), false); };
+  auto progress = [&](const char* stage) {
+    std::cerr << "build_knot_index: DT codes: after " << stage << ", " << r.named << " named, " << left()
+              << " still ambiguous\n";
+  };
+  propagate(r.by_homfly);
+  progress("HOMFLY-PT");
+  // A proof for one code of a class, then elimination for the rest of it. `forget` is called
+  // between classes (caches of the census side).
+  auto decide = [&](const std::function<int(Pending&)>& prove, const std::function<void()>& forget, int& how,
+                    const char* stage) {
+    const std::vector<std::size_t>* class_of = nullptr;
+    std::vector<std::size_t> current;
+    int tried = 0;
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      if (done[k]) continue;
+      Pending& p = pending[k];
+      std::erase_if(p.candidates, [&](std::size_t i) { return claimed[i]; });
+      if (p.candidates.size() < 2) continue;
+      if (!class_of || p.candidates != current) {
+        forget();
+        current = p.candidates;
+        class_of = &current;
+      }
+      if (++tried % 1000 == 0) std::cerr << "build_knot_index:   " << stage << ": " << tried << " codes tried\n";
+      const int i = prove(p);
+      if (i < 0) continue;
+      name(p, p.candidates[static_cast<std::size_t>(i)], how);
+      done[k] = true;
+      propagate(r.by_elimination);
+    }
+    forget();
+    progress(stage);
+  };
+  decide(
+      [&](Pending& p) {
+        const std::string sig = p.link.knotSig();
+        for (std::size_t i = 0; i < p.candidates.size(); ++i)
+          if (census_links[p.candidates[i]].knotSig() == sig) return static_cast<int>(i);
+        return -1;
+      },
+      [] {}, r.by_diagram, "equal diagrams");
+  std::unordered_map<std::size_t, std::string> census_covers;
+  decide(
+      [&](Pending& p) {
+        const std::string mine = covers_of(p.link);
+        int hit = -1, hits = 0;
+        for (std::size_t i = 0; i < p.candidates.size(); ++i) {
+          auto it = census_covers.find(p.candidates[i]);
+          if (it == census_covers.end())
+            it = census_covers.emplace(p.candidates[i], covers_of(census_links[p.candidates[i]])).first;
+          if (it->second == mine) hit = static_cast<int>(i), ++hits;
+        }
+        return hits == 1 ? hit : -1;
+      },
+      [&] { census_covers.clear(); }, r.by_covers, "covers");
+  // Diagrams one Reidemeister move of extra crossing away, from both sides: two minimal diagrams
+  // of one knot (flypes apart) often meet there, where a search from one side alone would need
+  // twice the height.
+  std::unordered_map<std::size_t, std::unordered_set<std::string>> census_near;
+  auto near = [](const regina::Link& l) {
+    std::unordered_set<std::string> sigs;
+    l.rewrite(1, 1, nullptr, [&](const std::string& sig, const regina::Link&) {
+      sigs.insert(sig);
+      return false;
+    });
+    return sigs;
+  };
+  decide(
+      [&](Pending& p) {
+        const std::unordered_set<std::string> mine = near(p.link);
+        int hit = -1, hits = 0;
+        for (std::size_t i = 0; i < p.candidates.size(); ++i) {
+          auto it = census_near.find(p.candidates[i]);
+          if (it == census_near.end()) it = census_near.emplace(p.candidates[i], near(census_links[p.candidates[i]])).first;
+          if (std::any_of(it->second.begin(), it->second.end(), [&](const std::string& s) { return mine.count(s); }))
+            hit = static_cast<int>(i), ++hits;
+        }
+        return hits == 1 ? hit : -1;
+      },
+      [&] { census_near.clear(); }, r.by_rewriting, "Reidemeister moves");
+  for (std::size_t k = 0; k < pending.size(); ++k)
+    if (!done[k]) {
+      ++r.unresolved;
+      std::cerr << "build_knot_index: " << codes[pending[k].code].name << " is one of "
+                << pending[k].candidates.size() << " census knots:";
+      for (std::size_t i : pending[k].candidates) std::cerr << " " << entries[i].regina_name;
+      std::cerr << "\n";
+    }
+  return r;
 }
 
 struct Args {
@@ -180,54 +432,16 @@ int main(int argc, char** argv) try {
     ++named;
   }
 
-  // [2b] DT names from a table of DT codes, for census knots that have none (13 and 14 crossings):
-  // the same HOMFLY-PT matching as for Rolfsen names, Reidemeister rewriting to break ties.
-  int dt_named = 0, dt_unresolved = 0;
+  // [2b] DT names from a table of DT codes, for census knots that have none (13 and 14 crossings);
+  // codes of crossing numbers the census already names are checked against those names instead.
+  DtNaming dt;
   if (!args.dt_names.empty()) {
-    std::ifstream in(args.dt_names);
-    if (!in) throw std::runtime_error("cannot read " + args.dt_names);
-    std::string line;
-    int line_no = 0;
-    while (std::getline(in, line)) {
-      ++line_no;
-      if (line.empty() || line[0] == '#') continue;
-      for (char& ch : line)
-        if (ch == ',' || ch == '[' || ch == ']' || ch == '(' || ch == ')') ch = ' ';
-      std::istringstream fields(line);
-      std::string name, code, v;
-      fields >> name;
-      while (fields >> v) code += (code.empty() ? "" : " ") + v;
-      name = canonical_knot_name(name);
-      regina::Link link;
-      try {
-        link = regina::Link::fromDT(code);
-      } catch (const std::exception& ex) {
-        throw std::runtime_error(args.dt_names + ":" + std::to_string(line_no) + ": bad DT code (" +
-                                 ex.what() + ")");
-      }
-      const int n = static_cast<int>(link.size());
-      const std::uint64_t fp = homfly_fingerprint(homfly_of(link));
-      std::vector<KnotTableEntry*> free_hits;
-      for (auto& e : entries)
-        if (e.crossings == n && e.dt_name.empty() && (e.key == fp || e.mirror_key == fp))
-          free_hits.push_back(&e);
-      if (free_hits.size() > 1) {
-        std::vector<std::string> sigs;
-        for (auto* e : free_hits) sigs.push_back(census_links[e - entries.data()].knotSig());
-        const int i = find_by_rewriting(link, sigs, 2);
-        if (i >= 0) free_hits = {free_hits[i]};
-      }
-      if (free_hits.size() != 1) {
-        ++dt_unresolved;
-        std::cerr << "build_knot_index: " << name << " matches " << free_hits.size()
-                  << " unnamed census knots\n";
-        continue;
-      }
-      free_hits.front()->dt_name = name;
-      ++dt_named;
-    }
-    std::cerr << "build_knot_index: " << dt_named << " DT names from " << args.dt_names << ", "
-              << dt_unresolved << " unresolved\n";
+    dt = name_from_dt_codes(read_dt_codes(args.dt_names), entries, census_links);
+    std::cerr << "build_knot_index: DT codes from " << args.dt_names << ": " << dt.confirmed
+              << " census DT names confirmed, " << dt.named << " knots named (" << dt.by_homfly
+              << " by HOMFLY-PT alone, " << dt.by_diagram << " by an equal diagram, " << dt.by_rewriting
+              << " by Reidemeister moves, " << dt.by_covers << " by covers, " << dt.by_elimination
+              << " by elimination), " << dt.unresolved << " unresolved\n";
   }
 
   // Signatures of each census diagram in the reference chirality (reflected where the Rolfsen
@@ -299,7 +513,7 @@ int main(int argc, char** argv) try {
   std::ofstream f(args.out);
   f << out.str();
   if (!f) throw std::runtime_error("cannot write " + args.out);
-  return ambiguous ? 1 : 0;
+  return ambiguous || dt.unresolved ? 1 : 0;
 } catch (const std::exception& e) {
   std::cerr << "build_knot_index: " << e.what() << "\n";
   return 1;
