@@ -455,7 +455,9 @@ void KnotPanels::unknot_dialog(GuiModel& model, const Frame<3>& view) {
     ImGui::TextDisabled("(no exercise knot in the scene)");
   } else if (changed_at_) {
     ImGui::TextWrapped("%s", exercise_message_.c_str());
-    ImGui::TextDisabled("It was %s. Ctrl+Z puts the crossing back, to try another.", unknot_name_.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("It was %s. Ctrl+Z puts the crossing back, to try another.", unknot_name_.c_str());
+    ImGui::PopStyleColor();
   } else if (unknot_.valid() || !unknot_report_) {
     ImGui::TextDisabled("working out every crossing of this view...");
   } else {
