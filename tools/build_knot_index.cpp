@@ -143,9 +143,11 @@ struct DtNaming {
   int unresolved = 0;
 };
 
-// Covers of the knot group of index 2..4 with their homology: tells apart many mutants, which
-// HOMFLY-PT cannot.
-std::string covers_of(const regina::Link& link) { return cover_signature(diagram_from_regina(link), 4); }
+// Covers of the knot group of index 2..max_index with their homology: tells apart many mutants,
+// which HOMFLY-PT cannot.
+std::string covers_of(const regina::Link& link, int max_index) {
+  return cover_signature(diagram_from_regina(link), max_index);
+}
 
 // Each code is matched, up to mirror image, with the census knot it draws: first the census
 // knots of its crossing number with its HOMFLY-PT polynomial; where several remain (mutants), the
@@ -274,19 +276,20 @@ DtNaming name_from_dt_codes(const std::vector<DtCode>& codes, std::vector<KnotTa
       },
       [] {}, r.by_diagram, "equal diagrams");
   std::unordered_map<std::size_t, std::string> census_covers;
-  decide(
-      [&](Pending& p) {
-        const std::string mine = covers_of(p.link);
-        int hit = -1, hits = 0;
-        for (std::size_t i = 0; i < p.candidates.size(); ++i) {
-          auto it = census_covers.find(p.candidates[i]);
-          if (it == census_covers.end())
-            it = census_covers.emplace(p.candidates[i], covers_of(census_links[p.candidates[i]])).first;
-          if (it->second == mine) hit = static_cast<int>(i), ++hits;
-        }
-        return hits == 1 ? hit : -1;
-      },
-      [&] { census_covers.clear(); }, r.by_covers, "covers");
+  auto by_covers = [&](int max_index) {
+    return [&, max_index](Pending& p) {
+      const std::string mine = covers_of(p.link, max_index);
+      int hit = -1, hits = 0;
+      for (std::size_t i = 0; i < p.candidates.size(); ++i) {
+        auto it = census_covers.find(p.candidates[i]);
+        if (it == census_covers.end())
+          it = census_covers.emplace(p.candidates[i], covers_of(census_links[p.candidates[i]], max_index)).first;
+        if (it->second == mine) hit = static_cast<int>(i), ++hits;
+      }
+      return hits == 1 ? hit : -1;
+    };
+  };
+  decide(by_covers(4), [&] { census_covers.clear(); }, r.by_covers, "covers to index 4");
   // Diagrams one Reidemeister move of extra crossing away, from both sides: two minimal diagrams
   // of one knot (flypes apart) often meet there, where a search from one side alone would need
   // twice the height.
@@ -312,6 +315,7 @@ DtNaming name_from_dt_codes(const std::vector<DtCode>& codes, std::vector<KnotTa
         return hits == 1 ? hit : -1;
       },
       [&] { census_near.clear(); }, r.by_rewriting, "Reidemeister moves");
+  decide(by_covers(5), [&] { census_covers.clear(); }, r.by_covers, "covers to index 5");
   for (std::size_t k = 0; k < pending.size(); ++k)
     if (!done[k]) {
       ++r.unresolved;
