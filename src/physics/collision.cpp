@@ -26,38 +26,49 @@ constexpr double kProximitySkin = 0.5;
 // Cap of the continuous test's iterations per pair (see failsafe_pass).
 constexpr int kCcdIterations = 24;
 
-template <int D>
-Simplex<D, 3> gather(std::span<const Vec<D>> x, const Triangle& t) {
-  return {x[t[0]], x[t[1]], x[t[2]]};
+template <int D, int K>
+Simplex<D, K> gather(std::span<const Vec<D>> x, const std::array<int, K>& c) {
+  Simplex<D, K> s;
+  for (int q = 0; q < K; ++q) s[q] = x[c[q]];
+  return s;
+}
+
+// The model's cells of this solver's kind.
+template <int D, int K>
+const std::vector<std::array<int, K>>& cells_of(const Model<D>& model) {
+  if constexpr (K == 3) return model.triangles;
+  else return model.segments;
 }
 
 }  // namespace
 
-template <int D>
-CollisionSolver<D>::CollisionSolver(const Model<D>& model)
-    : prox_(std::vector<Cell<3>>(model.triangles.begin(), model.triangles.end())) {
+template <int D, int K>
+CollisionSolver<D, K>::CollisionSolver(const Model<D>& model)
+    : prox_(std::vector<Cell<K>>(cells_of<D, K>(model).begin(), cells_of<D, K>(model).end())) {
   hit_.assign(model.nv, 0);
   w_.assign(model.nv, 0.0);
   prox_.set_skin(kProximitySkin);
-  contacts_.reserve(4 * model.triangles.size() + 16);
-  pairs_.reserve(4 * model.triangles.size() + 16);
+  contacts_.reserve(4 * cells_of<D, K>(model).size() + 16);
+  pairs_.reserve(4 * cells_of<D, K>(model).size() + 16);
 }
 
-template <int D>
-void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>> x0,
+template <int D, int K>
+void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec<D>> x0,
                                    std::span<Vec<D>> x1, std::span<Vec<D>> v,
                                    std::span<const std::uint8_t> pinned, double dt,
                                    CollisionStats& stats) {
   const double delta = model.contact_thickness;
   const double reach = kGatherFactor * delta;
-  const auto& tris = model.triangles;
+  const auto& tris = cells_of<D, K>(model);
   contacts_.clear();
-  // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs; the fail-safe
-  // still guards them.
+  // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs, and so are
+  // segments a few edges apart along their chain; the fail-safe still guards them.
   prox_.pairs_within(x0, reach, pairs_, RingPairs::kExclude);
   for (const ProximityPair<D>& pp : pairs_) {
     const ClosestPoints<D>& cp = pp.closest;
     if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them
+    if constexpr (K == 2)
+      if (model.chain_near(pp.a, pp.b)) continue;
     Contact c;
     c.a = pp.a;
     c.b = pp.b;
@@ -74,11 +85,11 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
   for (int sweep = 0; sweep < model.params.collision_iterations; ++sweep) {
     bool any = false;
     for (const Contact& c : contacts_) {
-      const Triangle& ta = tris[c.a];
-      const Triangle& tb = tris[c.b];
+      const auto& ta = tris[c.a];
+      const auto& tb = tris[c.b];
       Vec<D> u = Vec<D>::Zero();
       double wsum = 0;
-      for (int q = 0; q < 3; ++q) {
+      for (int q = 0; q < K; ++q) {
         u += c.wa[q] * v[ta[q]] - c.wb[q] * v[tb[q]];
         wsum += c.wa[q] * c.wa[q] * w_[ta[q]] + c.wb[q] * c.wb[q] * w_[tb[q]];
       }
@@ -93,7 +104,7 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
       const Vec<D> ut = u - vn * c.n;
       const double slip = ut.norm();
       if (mu > 0 && slip > 0) dir -= ut * (std::min(slip, mu * dvn) / slip / wsum);
-      for (int q = 0; q < 3; ++q) {
+      for (int q = 0; q < K; ++q) {
         const Vec<D> da = c.wa[q] * w_[ta[q]] * dir;
         const Vec<D> db = c.wb[q] * w_[tb[q]] * dir;
         v[ta[q]] += da;
@@ -110,14 +121,14 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
   // towards δ. Positions only, so it cannot feed kinetic energy.
   for (const Contact& c : contacts_) {
     if (c.d >= delta) continue;
-    const Triangle& ta = tris[c.a];
-    const Triangle& tb = tris[c.b];
+    const auto& ta = tris[c.a];
+    const auto& tb = tris[c.b];
     double wsum = 0;
-    for (int q = 0; q < 3; ++q)
+    for (int q = 0; q < K; ++q)
       wsum += c.wa[q] * c.wa[q] * w_[ta[q]] + c.wb[q] * c.wb[q] * w_[tb[q]];
     if (!(wsum > 0)) continue;
     const Vec<D> dir = c.n * (kPushFraction * (delta - c.d) / wsum);
-    for (int q = 0; q < 3; ++q) {
+    for (int q = 0; q < K; ++q) {
       x1[ta[q]] += c.wa[q] * w_[ta[q]] * dir;
       x1[tb[q]] -= c.wb[q] * w_[tb[q]] * dir;
     }
@@ -127,24 +138,24 @@ void CollisionSolver<D>::repulsion(const Model<D>& model, std::span<const Vec<D>
   stats.nonfinite = !touched_finite(model, x1, v);
 }
 
-template <int D>
-bool CollisionSolver<D>::touched_finite(const Model<D>& model, std::span<const Vec<D>> x,
+template <int D, int K>
+bool CollisionSolver<D, K>::touched_finite(const Model<D>& model, std::span<const Vec<D>> x,
                                         std::span<const Vec<D>> v) const {
   // Per contact while contacts are few; beyond a sixth of the vertices the whole arrays are
   // checked at once (a resting fold has thousands of contacts sharing each vertex).
   if (6 * contacts_.size() > static_cast<std::size_t>(model.nv)) return all_finite<D>(x) && all_finite<D>(v);
-  const auto& tris = model.triangles;
+  const auto& tris = cells_of<D, K>(model);
   for (const Contact& c : contacts_)
-    for (int q = 0; q < 3; ++q)
+    for (int q = 0; q < K; ++q)
       for (const int k : {tris[c.a][q], tris[c.b][q]})
         if (!all_finite(x[k]) || !all_finite(v[k])) return false;
   return true;
 }
 
-template <int D>
-int CollisionSolver<D>::failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0,
-                                      std::span<Vec<D>> x1) {
-  const auto& tris = model.triangles;
+template <int D, int K>
+int CollisionSolver<D, K>::failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0,
+                                         std::span<Vec<D>> x1) {
+  const auto& tris = cells_of<D, K>(model);
   const double eta = model.hard_thickness;
   const std::span<const Vec<D>> xe(x1.data(), x1.size());
   std::fill(hit_.begin(), hit_.end(), std::uint8_t{0});
@@ -155,16 +166,16 @@ int CollisionSolver<D>::failsafe_pass(const Model<D>& model, std::span<const Vec
   // distance evaluations it reports contact (the safe side) and the pair's vertices stop.
   opt.max_iterations = kCcdIterations;
   prox_.step_candidates(x0, xe, eta, [&](int i, int j) {
-    const Triangle& ta = tris[i];
-    const Triangle& tb = tris[j];
-    const Simplex<D, 3> a0 = gather<D>(x0, ta), b0 = gather<D>(x0, tb);
-    const Simplex<D, 3> a1 = gather<D>(xe, ta), b1 = gather<D>(xe, tb);
-    const double speed = relative_speed_bound<D, 3, 3>(a0, a1, b0, b1);
+    const auto& ta = tris[i];
+    const auto& tb = tris[j];
+    const Simplex<D, K> a0 = gather<D, K>(x0, ta), b0 = gather<D, K>(x0, tb);
+    const Simplex<D, K> a1 = gather<D, K>(xe, ta), b1 = gather<D, K>(xe, tb);
+    const double speed = relative_speed_bound<D, K, K>(a0, a1, b0, b1);
     if (speed == 0) return;  // still relative to each other: the gap at x0 (> η) stays
-    if (distance_lower_bound<D, 3, 3>(a0, b0, eta + speed) - speed > eta) return;
-    if (!earliest_contact<D, 3, 3>(a0, a1, b0, b1, opt).hit) return;
+    if (distance_lower_bound<D, K, K>(a0, b0, eta + speed) - speed > eta) return;
+    if (!earliest_contact<D, K, K>(a0, a1, b0, b1, opt).hit) return;
     ++hits;
-    for (int q = 0; q < 3; ++q) {
+    for (int q = 0; q < K; ++q) {
       hit_[ta[q]] = 1;
       hit_[tb[q]] = 1;
     }
@@ -172,12 +183,12 @@ int CollisionSolver<D>::failsafe_pass(const Model<D>& model, std::span<const Vec
   return hits;
 }
 
-template <int D>
-CollisionStats CollisionSolver<D>::solve(const Model<D>& model, std::span<const Vec<D>> x0,
-                                         std::span<Vec<D>> x1, std::span<Vec<D>> v,
-                                         std::span<const std::uint8_t> pinned, double dt) {
+template <int D, int K>
+CollisionStats CollisionSolver<D, K>::solve(const Model<D>& model, std::span<const Vec<D>> x0,
+                                            std::span<Vec<D>> x1, std::span<Vec<D>> v,
+                                            std::span<const std::uint8_t> pinned, double dt) {
   CollisionStats stats;
-  if (!model.params.collisions || model.triangles.empty()) return stats;
+  if (!model.params.collisions || cells_of<D, K>(model).empty()) return stats;
   repulsion(model, x0, x1, v, pinned, dt, stats);
   for (int pass = 0; pass < model.params.ccd_passes; ++pass) {
     ++stats.ccd_passes;
@@ -200,8 +211,11 @@ CollisionStats CollisionSolver<D>::solve(const Model<D>& model, std::span<const 
   return stats;
 }
 
-template class CollisionSolver<2>;
-template class CollisionSolver<3>;
-template class CollisionSolver<4>;
+template class CollisionSolver<2, 2>;
+template class CollisionSolver<3, 2>;
+template class CollisionSolver<4, 2>;
+template class CollisionSolver<2, 3>;
+template class CollisionSolver<3, 3>;
+template class CollisionSolver<4, 3>;
 
 }  // namespace s4d

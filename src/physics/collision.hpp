@@ -1,12 +1,13 @@
 // Collision avoidance for the mass-spring world, on the proximity kernel (exact closest points
-// and conservative-advancement CCD in R^D). Two layers:
+// and conservative-advancement CCD in R^D), over cells of K vertices: triangles (K = 3) of
+// surfaces or segments (K = 2) of curves. Two layers:
 //  1. repulsion (the paper's §5.1.2): pairs closer than the contact thickness δ get inelastic
 //     normal impulses with Coulomb friction (energy can only leave), plus the paper's equal and
 //     opposite displacement along the closest-point line back towards δ (positions only);
 //  2. a fail-safe: continuous collision over the step with the hard thickness η < δ; vertices of
 //     any pair that would come within η are stopped where they were, pass after pass, and if
 //     that has not converged every vertex is stopped. The start of a step is always η-separated,
-//     so its end is too: no step ends with two surfaces touching or crossed.
+//     so its end is too: no step ends with two surfaces (or strands) touching or crossed.
 #pragma once
 #include <cstdint>
 #include <span>
@@ -30,7 +31,7 @@ struct CollisionStats {
   bool nonfinite = false;
 };
 
-template <int D>
+template <int D, int K>
 class CollisionSolver {
  public:
   CollisionSolver() = default;
@@ -46,7 +47,7 @@ class CollisionSolver {
 
  private:
   struct Contact {
-    int a = 0, b = 0;                   // triangles
+    int a = 0, b = 0;                   // cells
     std::array<double, 3> wa{}, wb{};   // barycentric weights of the closest points
     Vec<D> n = Vec<D>::Zero();          // unit, from b's point to a's
     double d = 0;                       // distance at x0
@@ -62,7 +63,7 @@ class CollisionSolver {
   // All pair finding goes through one coherent proximity query (self_proximity.hpp): its list
   // of close pairs with distance bounds is reused from step to step while motion is small, and
   // it answers both the repulsion's pairs within reach and the fail-safe's step candidates.
-  SelfProximity<D, 3> prox_;
+  SelfProximity<D, K> prox_;
   std::vector<ProximityPair<D>> pairs_;  // grows to the largest count seen
   std::vector<Contact> contacts_;      // grows to the largest contact count seen
   std::vector<std::uint8_t> hit_;      // nv, vertices of pairs the fail-safe caught this pass

@@ -157,9 +157,44 @@ int Model<D>::substeps(double dt) const {
 }
 
 template <int D>
-int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex) {
+std::vector<Spring> make_springs(const Curve<D>& curve, double k, double bending_scale) {
+  std::vector<Spring> out;
+  std::unordered_set<std::uint64_t> seen;
   int first = 0;
-  for (const Surface<D>& b : bodies_) first += static_cast<int>(b.vertices.size());
+  for (const Polyline<D>& c : curve.components) {
+    const int n = static_cast<int>(c.points.size());
+    auto add = [&](int i, int step, SpringKind kind, double stiffness) {
+      const int j = i + step;
+      if (!c.closed && j >= n) return;
+      const int a = first + i, b = first + j % n;
+      if (a == b || !seen.insert(edge_key(a, b)).second) return;
+      out.push_back({a, b, (c.points[static_cast<std::size_t>(i)] - c.points[static_cast<std::size_t>(j % n)]).norm(),
+                     stiffness, kind});
+    };
+    // Kinds in order, as on a grid: a short closed chain keeps the stiffer kind of a repeated pair.
+    for (int i = 0; i < n; ++i) add(i, 1, SpringKind::kStructural, k);
+    for (int i = 0; i < n; ++i) add(i, 2, SpringKind::kBending, k * bending_scale);
+    first += n;
+  }
+  return out;
+}
+
+template <int D>
+int body_vertex_count(const Body<D>& body) {
+  if (const auto* s = std::get_if<Surface<D>>(&body)) return static_cast<int>(s->vertices.size());
+  return static_cast<int>(std::get<Curve<D>>(body).point_count());
+}
+
+template <int D>
+int ModelBuilder<D>::next_vertex() const {
+  int first = 0;
+  for (const Body<D>& b : bodies_) first += body_vertex_count(b);
+  return first;
+}
+
+template <int D>
+int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex) {
+  const int first = next_vertex();
   require(!surface.vertices.empty() && !surface.triangles.empty(),
           "a body needs vertices and triangles");
   for (const Vec<D>& p : surface.vertices) require(p.allFinite(), "a body has a non-finite vertex");
@@ -174,42 +209,153 @@ int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex)
 }
 
 template <int D>
+int ModelBuilder<D>::add_body(const Curve<D>& curve, double mass_per_vertex) {
+  const int first = next_vertex();
+  require(!curve.components.empty(), "a curve body needs a component");
+  for (const Polyline<D>& c : curve.components) {
+    const std::size_t n = c.points.size();
+    require(n >= (c.closed ? 3u : 2u), std::string("a ") + (c.closed ? "closed" : "open") +
+                                           " curve component needs at least " + (c.closed ? "3" : "2") +
+                                           " points, not " + std::to_string(n));
+    for (const Vec<D>& p : c.points) require(p.allFinite(), "a curve has a non-finite point");
+    for (std::size_t k = 0; k < c.segment_count(); ++k)
+      require(c.seg_a(k) != c.seg_b(k), "a curve has two equal consecutive points (point " + std::to_string(k) +
+                                            "): no direction for its spring");
+  }
+  require(std::isfinite(mass_per_vertex), "mass must be finite");
+  bodies_.push_back(curve);
+  masses_.push_back(mass_per_vertex > 0 ? mass_per_vertex : params_.mass);
+  return first;
+}
+
+template <int D>
+int ModelBuilder<D>::add_body(const Body<D>& body, double mass_per_vertex) {
+  return std::visit([&](const auto& b) { return add_body(b, mass_per_vertex); }, body);
+}
+
+namespace {
+
+template <int D>
+void add_vertices(Model<D>& m, const std::vector<Vec<D>>& points, double mass) {
+  for (const Vec<D>& p : points) {
+    m.initial.push_back(p);
+    m.mass.push_back(mass);
+    m.inv_mass.push_back(1.0 / mass);
+  }
+}
+
+// A chain's segments and where each lies along it. Segments closer along the chain than about
+// 1.5 δ (counted in mean edges) touch through the chain itself: left to its springs.
+template <int D>
+void add_chains(Model<D>& m, const Curve<D>& curve, int off, double thickness) {
+  for (const Polyline<D>& c : curve.components) {
+    const int n = static_cast<int>(c.points.size());
+    Chain chain;
+    chain.segments = static_cast<int>(c.segment_count());
+    chain.closed = c.closed;
+    const double mean = c.length() / chain.segments;
+    const double reach = std::floor(1 + 1.5 * thickness / mean);
+    chain.exclusion = static_cast<int>(std::clamp(reach, 2.0, std::max(2.0, chain.segments / 4.0)));
+    const int id = static_cast<int>(m.chains.size());
+    m.chains.push_back(chain);
+    for (int k = 0; k < chain.segments; ++k) {
+      m.segments.push_back({off + k, off + (k + 1) % n});
+      m.segment_place.push_back({id, k});
+    }
+    off += n;
+  }
+}
+
+// The closest distance of two cells sharing no vertex, by the same kernel as ever for triangles.
+template <int D>
+double cell_distance(const std::vector<Vec<D>>& x, const Triangle& a, const Triangle& b) {
+  const Simplex<D, 3> sa{x[a[0]], x[a[1]], x[a[2]]};
+  const Simplex<D, 3> sb{x[b[0]], x[b[1]], x[b[2]]};
+  return triangle_triangle<D>(sa, sb).distance;
+}
+template <int D>
+double cell_distance(const std::vector<Vec<D>>& x, const Segment& a, const Segment& b) {
+  return segment_segment<D>(x[a[0]], x[a[1]], x[b[0]], x[b[1]]).distance;
+}
+
+// The smallest gap of any two cells sharing no vertex (d_all) and of those the springs do not
+// keep apart (d_far), within `search`; the pair of d_all in worst.
+template <int D, std::size_t K, class Near>
+void initial_gaps(const Model<D>& m, const std::vector<std::array<int, K>>& cells, double search, Near near,
+                  double& d_all, double& d_far, std::array<int, 2>& worst) {
+  const std::size_t nc = cells.size();
+  std::vector<Box<D>> boxes(nc);
+  for (std::size_t t = 0; t < nc; ++t)
+    for (int v : cells[t]) boxes[t].add(m.initial[v]);
+  Bvh<D> bvh;
+  bvh.build(boxes);
+  bvh.self_pairs(search, [&](int i, int j) {
+    const auto& a = cells[i];
+    const auto& b = cells[j];
+    for (int u : a)
+      for (int w : b)
+        if (u == w) return;
+    const double d = cell_distance<D>(m.initial, a, b);
+    if (d < d_all) {
+      d_all = d;
+      worst = {std::min(i, j), std::max(i, j)};
+    }
+    if (!near(i, j)) d_far = std::min(d_far, d);
+  });
+}
+
+}  // namespace
+
+template <int D>
 Model<D> ModelBuilder<D>::build() const {
   validate(params_);
   require(!bodies_.empty(), "the world has no body");
+  bool any_surface = false, any_curve = false;
+  for (const Body<D>& b : bodies_) (std::holds_alternative<Surface<D>>(b) ? any_surface : any_curve) = true;
+  require(!(any_surface && any_curve), "a world holds surfaces or curves, not both");
   Model<D> m;
   m.params = params_;
   m.body_first_vertex.push_back(0);
   m.body_first_triangle.push_back(0);
+  m.body_first_segment.push_back(0);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const Surface<D>& s = bodies_[b];
     const int off = m.nv;
-    for (const Vec<D>& p : s.vertices) {
-      m.initial.push_back(p);
-      m.mass.push_back(masses_[b]);
-      m.inv_mass.push_back(1.0 / masses_[b]);
+    std::vector<Spring> springs;
+    if (const auto* curve = std::get_if<Curve<D>>(&bodies_[b])) {
+      for (const Polyline<D>& c : curve->components) add_vertices(m, c.points, masses_[b]);
+      add_chains(m, *curve, off, params_.thickness);
+      springs = make_springs(*curve, params_.stiffness, params_.bending_scale);
+    } else {
+      const Surface<D>& s = std::get<Surface<D>>(bodies_[b]);
+      add_vertices(m, s.vertices, masses_[b]);
+      for (const Triangle& t : s.triangles) {
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;  // degenerate: no area, no cell
+        m.triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
+      }
+      springs = make_springs(s, params_.stiffness, params_.shear_scale, params_.bending_scale);
     }
-    for (const Triangle& t : s.triangles) {
-      if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;  // degenerate: no area, no cell
-      m.triangles.push_back({t[0] + off, t[1] + off, t[2] + off});
-    }
-    for (Spring sp : make_springs(s, params_.stiffness, params_.shear_scale, params_.bending_scale)) {
+    for (Spring sp : springs) {
       sp.a += off;
       sp.b += off;
       m.springs.push_back(sp);
     }
-    m.nv += static_cast<int>(s.vertices.size());
+    m.nv += body_vertex_count(bodies_[b]);
     m.body_first_vertex.push_back(m.nv);
     m.body_first_triangle.push_back(static_cast<int>(m.triangles.size()));
+    m.body_first_segment.push_back(static_cast<int>(m.segments.size()));
   }
   if constexpr (D == 4) m.spring_groups = pack_spring_groups(m.springs);
-  // CSR adjacency over mesh edges.
+  // CSR adjacency over mesh (or curve) edges.
   std::vector<std::vector<int>> adj(m.nv);
   for (const Triangle& t : m.triangles)
     for (int c = 0; c < 3; ++c) {
       adj[t[c]].push_back(t[(c + 1) % 3]);
       adj[t[(c + 1) % 3]].push_back(t[c]);
     }
+  for (const Segment& s : m.segments) {
+    adj[s[0]].push_back(s[1]);
+    adj[s[1]].push_back(s[0]);
+  }
   m.adjacency_offset.push_back(0);
   for (auto& a : adj) {
     std::sort(a.begin(), a.end());
@@ -232,32 +378,17 @@ Model<D> ModelBuilder<D>::build() const {
   // Thicknesses: the contact layer must lie below every rest gap that springs do not guard, and
   // the hard layer below every gap at all, or the first step would already be "in contact".
   double d_all = std::numeric_limits<double>::infinity(), d_far = d_all;
-  int worst_a = -1, worst_b = -1;
-  const std::size_t nt = m.triangles.size();
-  std::vector<Box<D>> boxes(nt);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int v : m.triangles[t]) boxes[t].add(m.initial[v]);
-  Bvh<D> bvh;
-  bvh.build(boxes);
-  bvh.self_pairs(params_.thickness, [&](int i, int j) {
-    const Triangle& a = m.triangles[i];
-    const Triangle& b = m.triangles[j];
-    for (int u : a)
-      for (int w : b)
-        if (u == w) return;
-    const Simplex<D, 3> sa{m.initial[a[0]], m.initial[a[1]], m.initial[a[2]]};
-    const Simplex<D, 3> sb{m.initial[b[0]], m.initial[b[1]], m.initial[b[2]]};
-    const double d = triangle_triangle<D>(sa, sb).distance;
-    if (d < d_all) {
-      d_all = d;
-      worst_a = std::min(i, j);
-      worst_b = std::max(i, j);
-    }
-    if (!m.near_adjacent(a, b)) d_far = std::min(d_far, d);
-  });
+  std::array<int, 2> worst{-1, -1};
+  if (any_curve) {
+    initial_gaps(m, m.segments, params_.thickness, [&](int i, int j) { return m.chain_near(i, j); }, d_all, d_far,
+                 worst);
+  } else {
+    initial_gaps(m, m.triangles, params_.thickness,
+                 [&](int i, int j) { return m.near_adjacent(m.triangles[i], m.triangles[j]); }, d_all, d_far, worst);
+  }
   require(!(d_all <= 1e-9 * params_.thickness),
-          "the initial state intersects itself: triangles " + std::to_string(worst_a) + " and " +
-              std::to_string(worst_b) + " touch");
+          std::string("the initial state intersects itself: ") + (any_curve ? "segments " : "triangles ") +
+              std::to_string(worst[0]) + " and " + std::to_string(worst[1]) + " touch");
   m.contact_thickness = std::min(params_.thickness, 0.9 * d_far);
   m.hard_thickness = std::min(0.25 * m.contact_thickness, 0.5 * d_all);
   return m;
@@ -266,7 +397,9 @@ Model<D> ModelBuilder<D>::build() const {
 #define S4D_INSTANTIATE(D)                                                                    \
   template struct Model<D>;                                                                   \
   template class ModelBuilder<D>;                                                             \
-  template std::vector<Spring> make_springs<D>(const Surface<D>&, double, double, double);
+  template std::vector<Spring> make_springs<D>(const Surface<D>&, double, double, double);      \
+  template std::vector<Spring> make_springs<D>(const Curve<D>&, double, double);               \
+  template int body_vertex_count<D>(const Body<D>&);
 S4D_INSTANTIATE(2)
 S4D_INSTANTIATE(3)
 S4D_INSTANTIATE(4)

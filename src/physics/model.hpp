@@ -1,12 +1,18 @@
-// Model<D>: what does not change during a run (masses, springs, triangles, parameters), built once
-// from one or more surfaces; the physics kernels read it and write only Data<D> (see world.hpp).
+// Model<D>: what does not change during a run (masses, springs, collision cells, parameters), built
+// once from one or more surfaces or curves; the physics kernels read it and write only Data<D>
+// (see world.hpp). A knot is a chain in World<3>: its edges are structural springs, (i, i+2) pairs
+// bending springs, and its segments the collision cells.
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "core/vec.hpp"
+#include "shape/curve.hpp"
 #include "shape/surface.hpp"
 
 namespace s4d {
@@ -63,6 +69,21 @@ struct PhysicsParams {
   int max_substeps = 256;             // cap of the symplectic substep count
 };
 
+// A curve's edge: two vertex indices (its collision cell).
+using Segment = std::array<int, 2>;
+
+// Where a segment lies along its curve component (a chain): segments a few edges apart along it
+// touch through the chain itself, so the springs keep them apart, not the repulsion.
+struct ChainPlace {
+  int chain = 0;  // the component, counted over the model's curves
+  int index = 0;  // the segment's index along it
+};
+struct Chain {
+  int segments = 0;   // its segment count
+  bool closed = true;
+  int exclusion = 1;  // segments at most this many apart along it are left to the springs
+};
+
 template <int D>
 struct Model {
   PhysicsParams<D> params;
@@ -72,10 +93,16 @@ struct Model {
   std::vector<Vec<D>> initial;             // nv × D, positions at build time
   std::vector<Spring> springs;             // ns
   std::vector<SpringGroup4> spring_groups; // ns / 4 (D = 4): springs[4g .. 4g+3] packed for AVX
-  std::vector<Triangle> triangles;         // nt × 3, global vertex indices (collision cells)
+  // The collision cells: triangles of surface bodies or segments of curve bodies (a world holds
+  // one kind; ModelBuilder refuses a mix).
+  std::vector<Triangle> triangles;         // nt × 3, global vertex indices
+  std::vector<Segment> segments;           // nsg × 2, global vertex indices
+  std::vector<ChainPlace> segment_place;   // nsg
+  std::vector<Chain> chains;               // curve components
   std::vector<int> body_first_vertex;      // nb + 1, vertices of body b are [first[b], first[b+1])
   std::vector<int> body_first_triangle;    // nb + 1, same for triangles
-  std::vector<int> adjacency_offset;       // nv + 1, CSR over mesh edges
+  std::vector<int> body_first_segment;     // nb + 1, same for segments
+  std::vector<int> adjacency_offset;       // nv + 1, CSR over mesh (or curve) edges
   std::vector<int> adjacency;              // 2 × mesh edges, sorted within each vertex
   double contact_thickness = 0;            // δ actually used (≤ params.thickness, below rest gaps)
   double hard_thickness = 0;               // η < δ: the continuous fail-safe keeps every gap above it
@@ -86,25 +113,45 @@ struct Model {
   bool mesh_adjacent(int i, int j) const;  // i and j joined by a mesh edge
   // Cells sharing a vertex or joined by a mesh edge: kept apart by springs, not by repulsion.
   bool near_adjacent(const Triangle& a, const Triangle& b) const;
+  // Segments s and t of one chain at most its exclusion apart along it: kept apart by springs.
+  bool chain_near(int s, int t) const {
+    const ChainPlace& p = segment_place[static_cast<std::size_t>(s)];
+    const ChainPlace& q = segment_place[static_cast<std::size_t>(t)];
+    if (p.chain != q.chain) return false;
+    const Chain& c = chains[static_cast<std::size_t>(p.chain)];
+    int gap = p.index > q.index ? p.index - q.index : q.index - p.index;
+    if (c.closed) gap = std::min(gap, c.segments - gap);
+    return gap <= c.exclusion;
+  }
+  bool curves() const { return !segments.empty(); }
   // Symplectic substeps needed for a tick dt (1 for the paper's integrator).
   int substeps(double dt) const;
 };
 
-// Builds a Model from surfaces. Springs: for a surface with a grid, the paper's structural,
-// shear and bending springs; without one, mesh edges plus one bending spring across every edge
-// shared by two triangles. Throws s4d::Error on bad parameters, bad meshes, or an initial state
-// in which two cells sharing no vertex already touch.
+// A body: a surface, or a curve (one chain a component; a link has several).
+template <int D>
+using Body = std::variant<Surface<D>, Curve<D>>;
+
+// Builds a Model from surfaces or from curves. Springs: for a surface with a grid, the paper's
+// structural, shear and bending springs; without one, mesh edges plus one bending spring across
+// every edge shared by two triangles; for a curve, its edges and the (i, i+2) bending springs.
+// Throws s4d::Error on bad parameters, bad meshes or curves, surfaces and curves together, or an
+// initial state in which two cells sharing no vertex already touch.
 template <int D>
 class ModelBuilder {
  public:
   explicit ModelBuilder(PhysicsParams<D> params) : params_(std::move(params)) {}
-  // Adds a body; mass_per_vertex <= 0 takes params.mass. Returns the index of its first vertex.
+  // Adds a body; mass_per_vertex <= 0 takes params.mass. Returns the index of its first vertex
+  // (a curve's vertices are its components' points in order).
   int add_body(const Surface<D>& surface, double mass_per_vertex = 0);
+  int add_body(const Curve<D>& curve, double mass_per_vertex = 0);
+  int add_body(const Body<D>& body, double mass_per_vertex = 0);
   Model<D> build() const;
 
  private:
+  int next_vertex() const;
   PhysicsParams<D> params_;
-  std::vector<Surface<D>> bodies_;
+  std::vector<Body<D>> bodies_;
   std::vector<double> masses_;
 };
 
@@ -112,5 +159,12 @@ class ModelBuilder {
 template <int D>
 std::vector<Spring> make_springs(const Surface<D>& surface, double k, double shear_scale,
                                  double bending_scale);
+// A curve's springs: every edge, and (i, i+2) for bending, each pair once.
+template <int D>
+std::vector<Spring> make_springs(const Curve<D>& curve, double k, double bending_scale);
+
+// A curve body's vertex count (its components' points).
+template <int D>
+int body_vertex_count(const Body<D>& body);
 
 }  // namespace s4d

@@ -108,8 +108,16 @@ S4D_AVX_TARGET void linear_springs_avx_kernel(std::span<const Spring> springs,
 
 }  // namespace
 
+namespace {
+constexpr int kLane[4] = {0, 2, 1, 3};  // the lane of spring j in the kernel's sums
+}  // namespace
+
+void repack_rest_lengths(std::span<const Spring> springs, std::span<SpringGroup4> groups) {
+  for (std::size_t g = 0; g < groups.size() && 4 * g + 3 < springs.size(); ++g)
+    for (int j = 0; j < 4; ++j) groups[g].rest[kLane[j]] = springs[4 * g + static_cast<std::size_t>(j)].rest;
+}
+
 std::vector<SpringGroup4> pack_spring_groups(std::span<const Spring> springs) {
-  constexpr int kLane[4] = {0, 2, 1, 3};  // the lane of spring j in the kernel's sums
   // Byte offsets in 32 bits: vertex indices past 2^26 fall back to the portable kernel.
   constexpr int kMaxVertex = std::numeric_limits<std::int32_t>::max() / static_cast<int>(sizeof(Vec<4>));
   for (const Spring& s : springs)

@@ -15,6 +15,8 @@ void add_spring_forces(const Model<D>& model, std::span<const Vec<D>> x,
 
 // The whole groups of four springs, packed for the R^4 AVX kernel (Model::spring_groups).
 std::vector<SpringGroup4> pack_spring_groups(std::span<const Spring> springs);
+// The groups' rest lengths from their springs' (after the springs were given new ones), in place.
+void repack_rest_lengths(std::span<const Spring> springs, std::span<SpringGroup4> groups);
 
 namespace spring_detail {
 // The two kernels of linear springs (β = 0) in R^4, apart so that tests can hold them equal.

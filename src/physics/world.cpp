@@ -12,8 +12,20 @@
 
 namespace s4d {
 
+namespace {
+
+// The solvers of a model: only the kind it has cells of is built.
 template <int D>
-World<D>::World(Model<D> model) : model_(std::move(model)), collision_(model_) {
+void make_solvers(const Model<D>& m, CollisionSolver<D, 3>& surfaces, CollisionSolver<D, 2>& curves) {
+  surfaces = m.curves() ? CollisionSolver<D, 3>() : CollisionSolver<D, 3>(m);
+  curves = m.curves() ? CollisionSolver<D, 2>(m) : CollisionSolver<D, 2>();
+}
+
+}  // namespace
+
+template <int D>
+World<D>::World(Model<D> model) : model_(std::move(model)) {
+  make_solvers(model_, surfaces_, curves_);
   const int n = model_.nv;
   data_.x = model_.initial;
   data_.v.assign(n, Vec<D>::Zero());
@@ -70,7 +82,8 @@ void World<D>::step(double dt) {
   bool ok = clamps >= 0;
   if (ok) {
     data_.warnings.speed_clamps += clamps;
-    const CollisionStats cs = collision_.solve(model_, data_.x0, data_.x, data_.v, data_.pinned, dt);
+    const CollisionStats cs = model_.curves() ? curves_.solve(model_, data_.x0, data_.x, data_.v, data_.pinned, dt)
+                                              : surfaces_.solve(model_, data_.x0, data_.x, data_.v, data_.pinned, dt);
     data_.last_contacts = cs.contacts;
     data_.warnings.ccd_freezes += cs.frozen;
     if (cs.global_freeze) ++data_.warnings.global_freezes;
@@ -152,7 +165,18 @@ void World<D>::set_model(Model<D> model) {
     throw Error("physics: set_model needs " + std::to_string(model_.nv) + " vertices, got " +
                 std::to_string(model.nv));
   model_ = std::move(model);
-  collision_ = CollisionSolver<D>(model_);
+  make_solvers(model_, surfaces_, curves_);
+}
+
+template <int D>
+void World<D>::rest_here() {
+  for (Spring& s : model_.springs) s.rest = (data_.x[s.b] - data_.x[s.a]).norm();
+  if constexpr (D == 4) repack_rest_lengths(model_.springs, model_.spring_groups);
+}
+
+template <int D>
+void World<D>::stop() {
+  std::fill(data_.v.begin(), data_.v.end(), Vec<D>::Zero());
 }
 
 template <int D>
@@ -195,15 +219,24 @@ double World<D>::gravity_energy() const {
   return e;
 }
 
-template <int D>
-double World<D>::min_separation(double search) const {
-  std::vector<Cell<3>> cells(model_.triangles.begin(), model_.triangles.end());
-  SelfProximity<D, 3> prox(std::move(cells));
+namespace {
+
+template <int D, int K>
+double smallest_gap(const std::vector<std::array<int, K>>& cells, std::span<const Vec<D>> x, double search) {
+  SelfProximity<D, K> prox(std::vector<Cell<K>>(cells.begin(), cells.end()));
   std::vector<ProximityPair<D>> pairs;
-  prox.pairs_within(data_.x, search, pairs);
+  prox.pairs_within(x, search, pairs);
   double d = std::numeric_limits<double>::infinity();
   for (const auto& p : pairs) d = std::min(d, p.closest.distance);
   return d;
+}
+
+}  // namespace
+
+template <int D>
+double World<D>::min_separation(double search) const {
+  if (model_.curves()) return smallest_gap<D, 2>(model_.segments, data_.x, search);
+  return smallest_gap<D, 3>(model_.triangles, data_.x, search);
 }
 
 template class World<2>;

@@ -1,6 +1,7 @@
 // World<D>: the 4D (and 3D) mass-spring world the haptic loop steps at 1 kHz: springs, gravity,
 // damping, pins and pulled vertices, tool forces, collision avoidance that never lets surfaces
-// pass through each other, and roll-back of exploding steps. A step allocates nothing.
+// (or curves: a knot is a chain in World<3>) pass through each other, and roll-back of exploding
+// steps. A step allocates nothing.
 #pragma once
 #include <cmath>
 #include <cstdint>
@@ -49,7 +50,7 @@ class World {
 
   const Model<D>& model() const { return model_; }
   // Broad-phase runs of the collision query so far (it reuses its pair list while motion is small).
-  long long broad_phase_runs() const { return collision_.broad_phase_runs(); }
+  long long broad_phase_runs() const { return surfaces_.broad_phase_runs() + curves_.broad_phase_runs(); }
   const Data<D>& data() const { return data_; }
   int vertex_count() const { return model_.nv; }
   std::span<const Vec<D>> positions() const { return data_.x; }
@@ -77,6 +78,11 @@ class World {
   // Replaces the model (new parameters, a contact layer fitted to the current gaps) keeping the
   // state, pins, targets and tool forces; the vertex count must match. Throws s4d::Error.
   void set_model(Model<D> model);
+  // Every spring's rest length becomes its length now: the shape is kept as it was left (a knot
+  // edited like clay, not pulled back to where it was). Allocates nothing.
+  void rest_here();
+  // Stops every vertex where it is (velocities zero).
+  void stop();
   // FNV-1a over the bits of positions, velocities, pins, time and step count: equal hashes
   // after N steps mean the same run (Box2D's determinism test).
   std::uint64_t state_hash() const;
@@ -86,8 +92,9 @@ class World {
   double spring_energy() const;
   double gravity_energy() const;
   double energy() const { return kinetic_energy() + spring_energy() + gravity_energy(); }
-  // Smallest distance between two triangles sharing no vertex (infinity if none are within
-  // `search`), using the proximity kernel. For tests and metrics; allocates.
+  // Smallest distance between two cells (triangles, or segments of curves) sharing no vertex
+  // (infinity if none are within `search`), using the proximity kernel. For tests and metrics;
+  // allocates.
   double min_separation(double search) const;
 
  private:
@@ -98,7 +105,9 @@ class World {
 
   Model<D> model_;
   Data<D> data_;
-  CollisionSolver<D> collision_;
+  // One of the two has cells (ModelBuilder refuses a mix); the other's solve returns at once.
+  CollisionSolver<D, 3> surfaces_;
+  CollisionSolver<D, 2> curves_;
 };
 
 }  // namespace s4d

@@ -122,7 +122,7 @@ bool repulsion_overflows(double speed) {
   off[D - 1] = 0.2 * p.thickness;  // within δ
   b.add_body(test::lone_triangle<D>(0.1, off));
   const Model<D> model = b.build();
-  CollisionSolver<D> solver(model);
+  CollisionSolver<D, 3> solver(model);
   const std::vector<Vec<D>> x0(model.initial.begin(), model.initial.end());
   std::vector<Vec<D>> x1 = x0, v(x0.size(), Vec<D>::Zero());
   for (int i = 3; i < 6; ++i) v[i][D - 1] = -speed;  // the upper triangle falls onto the lower
