@@ -47,14 +47,16 @@ inline bool neighbours(const RelaxModel& m, const RelaxData& d, int i, int j) {
   const int c = d.comp[i];
   return i == j || next_of(m, c, i) == j || next_of(m, c, j) == i;
 }
+double mean_rest(const RelaxModel& m) {
+  double mean = 0;
+  for (double l : m.rest_length) mean += l;
+  return mean / static_cast<double>(m.rest_length.size());
+}
 }  // namespace
 
-void relax_step(const RelaxModel& m, RelaxData& d) {
+void relax_forces(const RelaxModel& m, RelaxData& d) {
   const int n = static_cast<int>(d.x.size());
-  double mean_rest = 0;
-  for (double l : m.rest_length) mean_rest += l;
-  mean_rest /= static_cast<double>(m.rest_length.size());
-  const double l0 = mean_rest, l2 = l0 * l0;
+  const double l0 = mean_rest(m), l2 = l0 * l0;
   for (auto& f : d.force) f.setZero();
 
   // [1] Repulsion between all vertex pairs that are not curve neighbours, and in the same sweep a
@@ -113,21 +115,27 @@ void relax_step(const RelaxModel& m, RelaxData& d) {
     }
     d.force[i] += m.bending * (d.x[j] + d.x[h] - 2.0 * d.x[i]);
   }
+}
 
-  // [3] Move, each vertex by at most the cap: two segments whose vertices each move less than
-  // gap / 2 cannot meet during the linear motion, so the knot type is kept.
-  const double cap = std::min(m.max_move * l0, m.safety * d.min_gap);
-  bool limited = false;
-  for (int i = 0; i < n; ++i) {
-    Vec3 step = m.step * d.force[i];
-    if (!step.allFinite()) continue;  // counted as a limited step, the vertex stays
-    const double s = step.norm();
-    if (s > cap) {
-      step *= cap / s;
-      limited = true;
-    }
-    d.x[i] += step;
+// [3] Move, each vertex by at most the cap: two segments whose vertices each move less than
+// gap / 2 cannot meet during the linear motion, so the knot type is kept.
+Vec3 relax_move(const RelaxModel& m, const RelaxData& d, int i, bool& limited) {
+  const double cap = std::min(m.max_move * mean_rest(m), m.safety * d.min_gap);
+  Vec3 step = m.step * d.force[static_cast<std::size_t>(i)];
+  if (!step.allFinite()) return Vec3::Zero();  // counted as a limited step, the vertex stays
+  const double s = step.norm();
+  if (s > cap) {
+    step *= cap / s;
+    limited = true;
   }
+  return step;
+}
+
+void relax_step(const RelaxModel& m, RelaxData& d) {
+  relax_forces(m, d);
+  const int n = static_cast<int>(d.x.size());
+  bool limited = false;
+  for (int i = 0; i < n; ++i) d.x[static_cast<std::size_t>(i)] += relax_move(m, d, i, limited);
   if (limited) ++d.limited_steps;
 }
 

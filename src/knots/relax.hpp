@@ -44,6 +44,12 @@ struct RelaxData {
 void relax_setup(const Curve<3>& curve, RelaxModel& model, RelaxData& data);
 // One gradient step. Never moves two non-neighbouring segments into contact.
 void relax_step(const RelaxModel& model, RelaxData& data);
+// A step's first stages alone: every vertex's force (into data.force) and data.min_gap, nothing
+// moved. The live relaxation (interact/live_simulation) drives a World by these.
+void relax_forces(const RelaxModel& model, RelaxData& data);
+// The move relax_step gives vertex i after relax_forces: step × force, within the
+// no-pass-through cap (zero when not finite); `limited` is set when the cap shortened it.
+Vec3 relax_move(const RelaxModel& model, const RelaxData& data, int i, bool& limited);
 // The data's positions as a curve again.
 Curve<3> relax_curve(const RelaxModel& model, const RelaxData& data);
 // Convenience: `iterations` steps from `curve`.
