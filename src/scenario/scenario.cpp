@@ -99,7 +99,7 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
   c.keys(root, "", {"name", "instruction", "duration", "frames", "script", "verdict"});
   Scenario s;
   s.file = origin;
-  s.dim = simulation_dimension(scene);
+  s.dim = surface_dimension(scene);
   if (s.dim == 0) throw ParseError(c.file, 0, "objects: a scenario needs at least one surface to simulate");
   s.scene = std::move(scene);
   s.description = s.scene.description;

@@ -1,4 +1,5 @@
-// build_world: scene surfaces → ModelBuilder bodies, with the checks a user needs to hear about.
+// build_world: scene surfaces (or curves) → ModelBuilder bodies, with the checks a user needs to
+// hear about.
 #include "scenario/world_builder.hpp"
 
 #include <algorithm>
@@ -12,13 +13,31 @@ namespace s4d {
 namespace {
 
 template <int D>
-Surface<D> as_body(const Shape& shape) {
+Body<D> as_body(const Shape& shape) {
   if constexpr (D == 4) {
     if (const auto* s3 = std::get_if<Surface<3>>(&shape)) return lift_to_4d(*s3);
+    if (const auto* c3 = std::get_if<Curve<3>>(&shape)) return lift_to_4d(*c3);
+    if (const auto* c4 = std::get_if<Curve<4>>(&shape)) return *c4;
     return std::get<Surface<4>>(shape);
   } else {
+    if (const auto* c3 = std::get_if<Curve<3>>(&shape)) return *c3;
     return std::get<Surface<3>>(shape);
   }
+}
+
+int curve_dimension(const Scene& scene) {
+  int dim = 0;
+  for (const SceneObject& o : scene.objects)
+    if (!is_surface(o.shape)) dim = std::max(dim, ambient_dim(o.shape));
+  return dim;
+}
+
+int shape_vertex_count(const Shape& shape) {
+  return std::visit([](const auto& s) -> int {
+    using T = std::decay_t<decltype(s)>;
+    if constexpr (std::is_same_v<T, Surface<T::kDim>>) return static_cast<int>(s.vertices.size());
+    else return static_cast<int>(s.point_count());
+  }, shape);
 }
 
 // An edge of more than two triangles has no side to push along: the physics would be wrong.
@@ -37,7 +56,7 @@ void require_manifold(const Surface<D>& s, const std::string& name) {
 }
 
 template <int D>
-Model<D> build_model(const PhysicsSettings& settings, const std::vector<Surface<D>>& bodies,
+Model<D> build_model(const PhysicsSettings& settings, const std::vector<Body<D>>& bodies,
                      const std::vector<double>& masses) {
   ModelBuilder<D> builder(physics_params<D>(settings));
   for (std::size_t b = 0; b < bodies.size(); ++b) builder.add_body(bodies[b], masses[b]);
@@ -46,26 +65,34 @@ Model<D> build_model(const PhysicsSettings& settings, const std::vector<Surface<
 
 }  // namespace
 
-int simulation_dimension(const Scene& scene) {
+int surface_dimension(const Scene& scene) {
   int dim = 0;
   for (const SceneObject& o : scene.objects)
     if (is_surface(o.shape)) dim = std::max(dim, ambient_dim(o.shape));
   return dim;
 }
 
+bool curves_are_bodies(const Scene& scene) { return surface_dimension(scene) == 0 && curve_dimension(scene) > 0; }
+
+int simulation_dimension(const Scene& scene) {
+  const int dim = surface_dimension(scene);
+  return dim > 0 ? dim : curve_dimension(scene);
+}
+
+bool is_body(const Scene& scene, const SceneObject& object) {
+  return is_surface(object.shape) || curves_are_bodies(scene);
+}
+
 void body_vertex_ranges(const Scene& scene, std::vector<int>& first, std::vector<int>& count) {
   first.assign(scene.objects.size(), -1);
   count.assign(scene.objects.size(), 0);
+  const bool curves = curves_are_bodies(scene);
   int nv = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Shape& shape = scene.objects[o].shape;
-    if (!is_surface(shape)) continue;
+    if (!curves && !is_surface(shape)) continue;
     first[o] = nv;
-    count[o] = std::visit([](const auto& s) -> int {
-      using T = std::decay_t<decltype(s)>;
-      if constexpr (std::is_same_v<T, Surface<T::kDim>>) return static_cast<int>(s.vertices.size());
-      return 0;
-    }, shape);
+    count[o] = shape_vertex_count(shape);
     nv += count[o];
   }
 }
@@ -100,21 +127,26 @@ int SceneWorld<D>::object_of_vertex(int v) const {
 template <int D>
 SceneWorld<D> build_world(const Scene& scene) {
   const int dim = simulation_dimension(scene);
-  if (dim == 0) throw Error("nothing to simulate: the scene has no surface (curves are not simulated yet)");
-  if (dim > D) throw Error("this scene's surfaces lie in R^4 and cannot be simulated in R^3");
-  std::vector<Surface<D>> bodies;
+  if (dim == 0) throw Error("nothing to simulate: the scene has no surface or curve");
+  if (dim > D) throw Error("this scene's objects lie in R^4 and cannot be simulated in R^3");
+  const bool curves = curves_are_bodies(scene);
+  std::vector<Body<D>> bodies;
   std::vector<double> masses;
   std::vector<int> first(scene.objects.size(), -1), count(scene.objects.size(), 0), body_object;
   int nv = 0;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& obj = scene.objects[o];
-    if (!is_surface(obj.shape)) continue;
-    Surface<D> body = as_body<D>(obj.shape);
-    if (body.vertices.empty() || body.triangles.empty())
-      throw Error("cannot simulate '" + obj.name + "': it has no triangles");
-    require_manifold(body, obj.name);
+    if (!curves && !is_surface(obj.shape)) continue;
+    Body<D> body = as_body<D>(obj.shape);
+    if (const auto* surface = std::get_if<Surface<D>>(&body)) {
+      if (surface->vertices.empty() || surface->triangles.empty())
+        throw Error("cannot simulate '" + obj.name + "': it has no triangles");
+      require_manifold(*surface, obj.name);
+    } else if (std::get<Curve<D>>(body).components.empty()) {
+      throw Error("cannot simulate '" + obj.name + "': it has no points");
+    }
     first[o] = nv;
-    count[o] = static_cast<int>(body.vertices.size());
+    count[o] = body_vertex_count(body);
     nv += count[o];
     bodies.push_back(std::move(body));
     masses.push_back(obj.mass);
@@ -132,12 +164,17 @@ SceneWorld<D> build_world(const Scene& scene) {
 
 template <int D>
 void SceneWorld<D>::apply_settings(const PhysicsSettings& settings) {
-  std::vector<Surface<D>> now = bodies;
+  std::vector<Body<D>> now = bodies;
   std::vector<double> masses;
   const auto x = world.positions();
   int v = 0;
   for (std::size_t b = 0; b < now.size(); ++b) {
-    for (Vec<D>& p : now[b].vertices) p = x[v++];
+    if (auto* s = std::get_if<Surface<D>>(&now[b])) {
+      for (Vec<D>& p : s->vertices) p = x[v++];
+    } else {
+      for (Polyline<D>& c : std::get<Curve<D>>(now[b]).components)
+        for (Vec<D>& p : c.points) p = x[v++];
+    }
     const double m = world.model().mass[static_cast<std::size_t>(world.model().body_first_vertex[b])];
     masses.push_back(m);
   }
@@ -158,19 +195,27 @@ void copy_positions_into(const SceneWorld<D>& sw, std::span<const Vec<D>> x, Sce
     if (sw.first[o] < 0) continue;
     const int f = sw.first[o];
     if constexpr (D == 4) {  // an object of R^3 moved by a world of R^4 may leave w = 0
-      if (const auto* s3 = std::get_if<Surface<3>>(&scene.objects[o].shape))
-        scene.objects[o].shape = lift_to_4d(*s3);
+      Shape& shape = scene.objects[o].shape;
+      if (const auto* s3 = std::get_if<Surface<3>>(&shape)) shape = lift_to_4d(*s3);
+      else if (const auto* c3 = std::get_if<Curve<3>>(&shape)) shape = lift_to_4d(*c3);
     }
+    int i = 0;
+    auto put = [&](auto& p) {
+      if (i >= sw.count[o]) return;
+      const auto& q = x[static_cast<std::size_t>(f + i++)];
+      using P = std::decay_t<decltype(p)>;
+      if constexpr (P::RowsAtCompileTime == D) p = q;
+      else p.template head<D>() = q.template head<D>();
+    };
     std::visit(
         [&](auto& s) {
           using T = std::decay_t<decltype(s)>;
-          if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-            constexpr int E = T::kDim;
-            const int n = std::min<int>(static_cast<int>(s.vertices.size()), sw.count[o]);
-            for (int i = 0; i < n; ++i) {
-              const auto& p = x[static_cast<std::size_t>(f + i)];
-              if constexpr (E == D) s.vertices[i] = p;
-              else s.vertices[i].template head<D>() = p.template head<D>();
+          if constexpr (T::kDim >= D) {  // a world of R^3 holds no object of R^4
+            if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+              for (auto& p : s.vertices) put(p);
+            } else {
+              for (auto& c : s.components)
+                for (auto& p : c.points) put(p);
             }
           }
         },

@@ -62,6 +62,39 @@ TEST(WorldBuilder, DimensionFollowsTheSurfaces) {
   EXPECT_THROW(build_world<3>(s), Error);
 }
 
+// Without surfaces, the curves are the bodies (a knot is a chain): their points in order, moved
+// back into the scene by copy_positions_into, rebuilt by apply_settings.
+TEST(WorldBuilder, WithoutSurfacesTheCurvesAreTheBodies) {
+  Scene s;
+  s.objects.push_back(object("trefoil", "torus-knot", {{"n", 60}}));
+  SceneObject far = object("ring", "torus-knot", {{"p", 1}, {"q", 1}, {"n", 30}});
+  far.placement.offset = Vec4(10, 0, 0, 0);
+  far.shape = placed(far.shape, far.placement);
+  s.objects.push_back(far);
+  EXPECT_EQ(surface_dimension(s), 0);
+  EXPECT_TRUE(curves_are_bodies(s));
+  EXPECT_EQ(simulation_dimension(s), 3);
+  SceneWorld<3> w = build_world<3>(s);
+  EXPECT_EQ(w.first, (std::vector<int>{0, 60}));
+  EXPECT_EQ(w.count, (std::vector<int>{60, 30}));
+  EXPECT_TRUE(w.world.model().curves());
+  EXPECT_EQ(w.world.model().segments.size(), 90u);
+  EXPECT_EQ(w.world.positions()[60], std::get<Curve<3>>(s.objects[1].shape).components[0].points[0]);
+  std::vector<Vec3> x(w.world.positions().begin(), w.world.positions().end());
+  for (Vec3& p : x) p += Vec3(0, 0, 1);
+  Scene moved = s;
+  copy_positions_into<3>(w, x, moved);
+  EXPECT_EQ(std::get<Curve<3>>(moved.objects[1].shape).components[0].points[5], x[65]);
+  PhysicsSettings stiffer = s.physics;
+  stiffer.stiffness = 400;
+  w.apply_settings(stiffer);
+  EXPECT_EQ(w.world.model().springs[0].k, 400);
+  // With a surface, curves are drawn but not simulated.
+  s.objects.push_back(object("a", "sphere", {{"n", 6}}));
+  EXPECT_FALSE(curves_are_bodies(s));
+  EXPECT_EQ(build_world<4>(s).first, (std::vector<int>{-1, -1, 0}));
+}
+
 TEST(WorldBuilder, RefusalsSayWhatIsWrong) {
   Scene empty;
   EXPECT_NE(error_of(empty).find("no surface"), std::string::npos);
