@@ -48,7 +48,7 @@ struct SceneStatus {
   int contacts = 0;             // pairs handled by repulsion in the last step
   std::int64_t rollbacks = 0, ccd_freezes = 0, global_freezes = 0, rejected_inputs = 0;
   int held_vertex = -1;         // the vertex on the rubber band, -1 when none
-  int grab_mode = 0;            // 0: in the shadow, 1: along w (the shadow ray)
+  int grab_mode = 0;            // 0: in the shadow, 1: along the shadow ray (w, or a knot's depth)
   Vec3 band_from = Vec3::Zero();  // shadow space: the hand's end of the rubber band
   Vec3 band_to = Vec3::Zero();    // shadow space: the held vertex
   double band_force = 0;        // N, what the band pulls the vertex with
@@ -58,6 +58,7 @@ struct SceneStatus {
   std::uint64_t state_revision = 0;     // the revision of the last state put in place (an undo)
   char message[160] = {};       // the last request the scene refused, and why
   bool exploring = false;       // the probe walks the surface instead of the band pulling it
+  bool relaxing = false;        // the knot-energy relaxation drives the curves
   Vec3 probe = Vec3::Zero();    // shadow space, where the probe is
   double probe_w = 0;           // its 4D depth
   std::uint64_t event_count = 0;              // events so far; event i is events[i % kRecentEvents]

@@ -1,6 +1,7 @@
 // The grab tool's events: pick on hover, band on press, the hand on the drag plane.
 #include "interact/grab_tool.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "interact/live_simulation.hpp"
@@ -8,8 +9,16 @@
 
 namespace s4d {
 
+namespace {
+
+// A knot's depth is the view's; a surface's shadow ray runs along w.
+const char* along_what(const Session& s) { return s.dimension() == 3 ? "along the depth" : "along w"; }
+
+}  // namespace
+
 std::string GrabTool::help() const {
-  std::string h = "touch: drag a surface to pull it (Alt: along w), Tab: next sheet, P / right click: pin";
+  std::string h = "touch: drag a surface or a strand to pull it (Alt: along the shadow ray), Tab: next sheet, "
+                  "P / right click: pin";
   if (hits_.size() > 1)
     h = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) + " under the cursor (Tab: next); " + h;
   return h;
@@ -20,8 +29,21 @@ int GrabTool::world_vertex(const SheetHit& h, const Session& s) {
   return first < 0 ? -1 : first + h.vertex;
 }
 
+std::vector<SheetHit> GrabTool::pick(const ToolInput& in, const Session& s) {
+  std::vector<SheetHit> hits = pick_sheets(s.scene(), in.view.eye, in.view.ray);
+  bool strands = false;
+  for (const SheetHit& h : pick_strands(s.scene(), in.view.camera, in.view.cursor, in.view.window, kStrandPixels))
+    if (s.first_vertex(h.object) >= 0) {  // a curve the World simulates
+      hits.push_back(h);
+      strands = true;
+    }
+  if (strands)
+    std::stable_sort(hits.begin(), hits.end(), [](const SheetHit& a, const SheetHit& b) { return a.distance < b.distance; });
+  return hits;
+}
+
 void GrabTool::hover(const ToolInput& in, Session& s) {
-  hits_ = pick_sheets(s.scene(), in.view.eye, in.view.ray);
+  hits_ = pick(in, s);
   if ((in.view.cursor - tab_cursor_).norm() > 4) sheet_ = 0;
   if (sheet_ >= static_cast<int>(hits_.size())) sheet_ = 0;
   // The mouse's hand rests where a press would take hold, so the band starts slack.
@@ -39,10 +61,10 @@ bool GrabTool::press(const ToolInput& in, Session& s) {
   plane_point_ = h.point;
   hand_ = h.point;
   s.set_hand(hand_, true);
-  s.record("drag vertex " + std::to_string(v) + (along_w_ ? " along w" : ""));
+  s.record("drag vertex " + std::to_string(v) + (along_w_ ? std::string(" ") + along_what(s) : ""));
   s.send(live_grab(v, along_w_ ? 1 : 0, hand_));
   holding_ = true;
-  message_ = "holding vertex " + std::to_string(v) + (along_w_ ? " (along w)" : "");
+  message_ = "holding vertex " + std::to_string(v) + (along_w_ ? std::string(" (") + along_what(s) + ")" : "");
   return true;
 }
 
@@ -97,8 +119,11 @@ bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
       tab_cursor_ = in.view.cursor;
       hand_ = hits_[static_cast<std::size_t>(sheet_)].point;
       s.set_hand(hand_, false);
-      message_ = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) +
-                 " (w = " + std::to_string(hits_[static_cast<std::size_t>(sheet_)].w).substr(0, 6) + ")";
+      const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
+      const bool strand = !is_surface(s.scene().objects[static_cast<std::size_t>(h.object)].shape);
+      message_ = (strand ? "strand " : "sheet ") + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) +
+                 (strand ? " (" + std::to_string(h.distance).substr(0, 6) + " from the eye)"
+                         : " (w = " + std::to_string(h.w).substr(0, 6) + ")");
     }
     return true;
   }

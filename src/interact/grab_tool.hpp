@@ -1,7 +1,8 @@
-// GrabTool (paper 5.1.4, Fig. 7): left-drag on a surface holds the vertex under the cursor on a
-// rubber band that the haptic loop renders; Alt drags it along the shadow ray (w) instead; Tab
-// picks the next sheet under the cursor; P or a right click pins and unpins; the wheel moves the
-// hand in depth while holding. On empty space the drag turns the view as usual.
+// GrabTool (paper 5.1.4, Fig. 7; for knots Fig. 2): left-drag on a surface, or on a strand of a
+// simulated curve, holds the vertex under the cursor on a rubber band that the haptic loop
+// renders; Alt drags it along the shadow ray instead (w, or a knot's depth: its shadow stays); Tab
+// picks the next sheet or strand under the cursor; P or a right click pins and unpins; the wheel
+// moves the hand in depth while holding. On empty space the drag turns the view as usual.
 #pragma once
 #include <vector>
 
@@ -30,6 +31,9 @@ class GrabTool final : public Tool {
  private:
   // The world vertex of hit h, or -1.
   static int world_vertex(const SheetHit& h, const Session& s);
+  // The sheets, and the simulated curves' strands, under the cursor, nearest the eye first.
+  static std::vector<SheetHit> pick(const ToolInput& in, const Session& s);
+  static constexpr double kStrandPixels = 10;  // how near the cursor a strand is taken
   void toggle_pin_under_cursor(Session& s);
 
   std::vector<SheetHit> hits_;

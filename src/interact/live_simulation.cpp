@@ -17,6 +17,7 @@
 #include "interact/handover.hpp"
 #include "interact/curve_explorer_scene.hpp"
 #include "interact/surface_explorer.hpp"
+#include "knots/relax.hpp"
 #include "scenario/script_driver.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -82,6 +83,8 @@ SceneCommand live_explore(bool on, const Vec3& at) {
   for (int k = 0; k < 3; ++k) c.x[k] = at[k];
   return c;
 }
+
+SceneCommand live_relax(bool on) { return live_command(LiveCode::kRelax, 0, on ? 1 : 0); }
 
 SceneCommand live_mapping(const DeviceMapping& m) {
   SceneCommand c = live_command(LiveCode::kMapping);
@@ -212,6 +215,16 @@ class Core {
       case LiveCode::kClearPins:
         for (int i = 0; i < nv; ++i) w.unpin(i);
         break;
+      case LiveCode::kRelease:
+        if (w.model().curves()) {  // clay: it stays where the hand left it
+          w.rest_here();
+          w.stop();
+        }
+        break;
+      case LiveCode::kRelax:
+        if (c.i[1] == 1) start_relax();
+        else stop_relax();
+        break;
       case LiveCode::kSettings:
         if (!finite_command(c)) {
           set_message(status_, "physics settings refused: a value is not finite");
@@ -247,13 +260,18 @@ class Core {
         x[i][k] = s.positions[i * D + static_cast<std::size_t>(k)];
         if (!s.velocities.empty()) v[i][k] = s.velocities[i * D + static_cast<std::size_t>(k)];
       }
+    const std::vector<Vec<D>> before(w.positions().begin(), w.positions().end());
+    const std::vector<Vec<D>> before_v(w.velocities().begin(), w.velocities().end());
     try {
       w.set_state(x, v);
+      if (s.reshape) world_.apply_settings(settings_);  // the springs rest in the edited shape
     } catch (const std::exception& e) {
-      set_message(status_, e.what());
+      w.set_state(before, before_v);
+      set_message(status_, std::string("the edit was refused: ") + e.what());
       return;
     }
     w.set_time(s.time);
+    if (relaxing_) stop_relax();
     for (int i = 0; i < w.vertex_count(); ++i) w.unpin(i);
     for (int p : s.pinned)
       if (p >= 0 && p < w.vertex_count()) w.pin(p);
@@ -277,6 +295,7 @@ class Core {
     if (owed) owed_ = std::max(0.0, owed_ - ts);
     else --single_steps_;
     World<D>& w = world_.world;
+    if (relaxing_) relax_forces_now();
     if (hand_.vertex >= 0 && hand_.vertex < w.vertex_count())
       w.set_external_force(hand_.vertex, band_force(hand_, w.positions()[hand_.vertex], w.velocities()[hand_.vertex]));
     if (script_) script_->apply(w, (w.data().steps + 1) * ts);
@@ -298,6 +317,7 @@ class Core {
     status_.global_freezes = d.warnings.global_freezes;
     status_.rejected_inputs = d.warnings.rejected_inputs;
     status_.lag = owed_;
+    status_.relaxing = relaxing_;
     int pins = 0;
     for (std::uint8_t p : d.pinned) pins += p != 0;
     status_.pinned = pins;
@@ -327,6 +347,7 @@ class Core {
     hand_ = Hand<D>{};
     owed_ = 0;
     script_.reset();
+    relaxing_ = false;
     if (with_script && scenario_) {
       try {
         script_.emplace(*scenario_, world_);
@@ -337,10 +358,85 @@ class Core {
     }
   }
 
+  // [relax] The knot energy of knots/relax.hpp as forces in this World, so that its collision
+  // avoidance guards every step as ever: every few steps the energy's step (what `knot relax`
+  // moves a point by) becomes each vertex's velocity over those steps, and the springs rest where
+  // the curve is (they would pull it back); every step a force gives each vertex that velocity.
+  void start_relax() {
+    if constexpr (D != 3) {
+      set_message(status_, "relax works on knots: closed curves of R^3");
+    } else {
+      Curve<3> now;
+      const auto x = world_.world.positions();
+      std::size_t v = 0;
+      for (const Body<D>& b : world_.bodies) {
+        const auto* c = std::get_if<Curve<D>>(&b);
+        if (!c) {
+          set_message(status_, "relax works on knots: this scene simulates surfaces");
+          return;
+        }
+        for (const Polyline<D>& comp : c->components) {
+          Polyline<3> p{{}, comp.closed};
+          for (std::size_t i = 0; i < comp.points.size(); ++i) p.points.push_back(x[v++]);
+          now.components.push_back(std::move(p));
+        }
+      }
+      try {
+        relax_setup(now, relax_model_, relax_data_);
+      } catch (const std::exception& e) {
+        set_message(status_, std::string("cannot relax: ") + e.what());
+        return;
+      }
+      relax_target_.assign(x.size(), Vec<D>::Zero());
+      relax_countdown_ = 0;
+      // The energy costs O(n²) an evaluation: a large knot is evaluated less often (as often as a
+      // 220-point one every other step), so that the physics keeps up with the clock.
+      const double n = static_cast<double>(x.size());
+      relax_every_ = std::max(2, static_cast<int>(std::lround(n * n / 25000)));
+      relaxing_ = true;
+      status_.message[0] = 0;
+    }
+  }
+  void stop_relax() {
+    if (!relaxing_) return;
+    relaxing_ = false;
+    World<D>& w = world_.world;
+    w.clear_external_forces();
+    w.rest_here();
+    w.stop();
+  }
+  void relax_forces_now() {
+    World<D>& w = world_.world;
+    const auto x = w.positions(), v = w.velocities();
+    if constexpr (D == 3) {
+      if (relax_countdown_-- <= 0) {
+        relax_countdown_ = relax_every_ - 1;
+        std::copy(x.begin(), x.end(), relax_data_.x.begin());
+        relax_forces(relax_model_, relax_data_);
+        const double period = relax_every_ * time_step();
+        bool limited = false;
+        for (std::size_t i = 0; i < x.size(); ++i)
+          relax_target_[i] = relax_move(relax_model_, relax_data_, static_cast<int>(i), limited) / period;
+        w.rest_here();
+      }
+    }
+    // Reaches the target velocity in one step (symplectic Euler: v += dt f / m).
+    const double dt = time_step();
+    for (std::size_t i = 0; i < x.size(); ++i)
+      w.set_external_force(static_cast<int>(i), (w.model().mass[i] / dt) * (relax_target_[i] - v[i]));
+  }
+
+
   Scene start_;
   PhysicsSettings settings_;
   std::optional<Scenario> scenario_;
   SceneWorld<D> world_;
+  bool relaxing_ = false;
+  RelaxModel relax_model_;
+  RelaxData relax_data_;
+  std::vector<Vec<D>> relax_target_;  // nv, m/s
+  int relax_countdown_ = 0;
+  int relax_every_ = 2;  // steps between evaluations of the knot energy
   std::optional<ScriptDriver<D>> script_;
   Hand<D> hand_;
   bool playing_ = true;
@@ -432,6 +528,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing);
     nv_ = core->vertex_count();
     triangles_ = core->world().model().triangles;
+    curves_ = core->world().model().curves();
     if (o.async_physics) {
       thread_ = std::make_unique<PhysicsThread<D>>(std::move(core));
       current_ = &thread_->state();  // before the loop thread starts: it becomes the one reader
@@ -444,7 +541,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     params_[kForceScale] = {"force scale", 1, 0, 10, "device N per vertex N"};
     params_[kExploreStiffness] = {"explore K", 200, 0, 1000, "N/m at the device: the navigation spring"};
     params_[kExploreDamping] = {"explore B", 1.0, 0, 10, "N s/m at the device"};
-    if constexpr (D == 4) explorer_ = std::make_unique<SurfaceExplorer>(triangles_, nv_);
+    if constexpr (D == 4)
+      if (!triangles_.empty()) explorer_ = std::make_unique<SurfaceExplorer>(triangles_, nv_);
   }
 
 
@@ -491,7 +589,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
         return;
       case LiveCode::kRelease:
         held_ = -1;
-        return;
+        break;  // the core lets a curve rest where it was left
       case LiveCode::kGrabMode:
         if (held_ >= 0) grab(held_, c.i[1]);
         return;
@@ -570,6 +668,9 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     if (!button && button_ && grabbed_by_button_) {
       held_ = -1;
       grabbed_by_button_ = false;
+      const SceneCommand release = live_command(LiveCode::kRelease);
+      if (core_) core_->command(release);
+      else thread_->command(release);
     }
     button_ = button;
 
@@ -746,12 +847,19 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     out.engaged = true;
   }
 
+  // The vertex nearest `point` in the shadow within `radius`. A knot's shadow is the view's plane:
+  // there the distance across the line of sight counts, depth only a little (a device need not
+  // find a strand's depth to take it; at a crossing the nearer strand in depth wins).
   int nearest(const Vec3& point, double radius) const {
     const auto x = positions();
     int best = -1;
     double best_d2 = radius * radius;
+    const Vec3 depth = mapping_.axes.col(2);
     for (int v = 0; v < static_cast<int>(x.size()); ++v) {
-      const double d2 = (shadow(x[v]) - point).squaredNorm();
+      Vec3 d = shadow(x[v]) - point;
+      if constexpr (D == 3)
+        if (curves_) d -= 0.9 * d.dot(depth) * depth;
+      const double d2 = d.squaredNorm();
       if (d2 < best_d2) {
         best_d2 = d2;
         best = v;
@@ -781,9 +889,14 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     h.max_force = params_[kBandMaxForce].value;
     if constexpr (D == 4) h.frame = frame4_.matrix();
     h.target = grab_view_;
-    if (mode_ == 1 && D == 4) {
-      // Along the shadow ray: the device's motion along its y axis moves w; the shadow holds.
-      h.target[D - 1] = grab_view_[D - 1] + (device_.position - grab_device_).y() / mapping_.metres_per_unit;
+    if (mode_ == 1) {
+      // Along the shadow ray: the device's motion along its y axis moves the depth (w; for a world
+      // of R^3 the view's depth axis, the camera's); the shadow holds.
+      if constexpr (D == 3) {
+        h.frame = mapping_.axes;
+        h.target = mapping_.axes.transpose() * grab_view_;
+      }
+      h.target[D - 1] += (device_.position - grab_device_).y() / mapping_.metres_per_unit;
       h.target_v[D - 1] = device_.velocity.y() / mapping_.metres_per_unit;
     } else {
       h.target.template head<3>() = hand_shadow();
@@ -799,7 +912,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   Vec3 felt(const Vec<D>& on_vertex) const {
     const Vec<D> q = to_view(-on_vertex);
     Vec3 f = mapping_.axes.transpose() * Vec3(q.template head<3>());
-    if (mode_ == 1 && D == 4) f = Vec3(0, q[D - 1], 0);
+    if (mode_ == 1) f = Vec3(0, D == 4 ? q[D - 1] : f.z(), 0);
     const double k = std::max(params_[kBandStiffness].value, 1e-9);
     const double stiffness_cap = kMaxFeltStiffness * mapping_.metres_per_unit / k;
     const double scale = std::min(params_[kForceScale].value, stiffness_cap);
@@ -833,6 +946,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   Frame<4> frame4_;
   DeviceState device_;
   int nv_ = 0;
+  bool curves_ = false;  // the bodies are curves (a knot: its shadow is the view's plane)
   int held_ = -1, mode_ = 0;
   Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
   Vec<D> grab_view_ = Vec<D>::Zero();

@@ -32,9 +32,10 @@ enum class LiveCode : int {
   kUnpin,      // i0: vertex
   kTogglePin,  // i0: vertex
   kClearPins,
-  kGrab,         // i0: vertex, i1: mode (0 shadow, 1 along w); x0..x2: the hand's point in shadow space
+  kGrab,         // i0: vertex, i1: mode (0 shadow, 1 along the shadow ray: w, or a knot's depth);
+                 // x0..x2: the hand's point in shadow space
   kGrabNearest,  // x0..x2: shadow point, x3: radius (scene units); i1: mode — the device's button
-  kRelease,
+  kRelease,      // a curve (edited like clay) rests where it was left
   kGrabMode,     // i1: mode, re-anchored where the hand and the vertex are now
   kFrame,        // x0..x15: the 4D view frame, row-major (R^3 worlds ignore it)
   kMapping,      // x0..2 centre, x3..11 axes (row-major), x12 metres per unit, x13..15 workspace centre
@@ -42,6 +43,7 @@ enum class LiveCode : int {
   kStopScript,   // let go of what the script holds, keep the state
   kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops; in R^3
                  // the probe walks the knot image last offered (offer_curve_image)
+  kRelax,        // i1: 1 starts relaxing the knots (closed curves of R^3) live, 0 stops
 };
 
 // SceneEvent kinds of the live simulation.
@@ -58,6 +60,7 @@ SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode);
 SceneCommand live_frame(const Frame<4>& frame);
 SceneCommand live_mapping(const DeviceMapping& mapping);
 SceneCommand live_explore(bool on, const Vec3& at = Vec3::Zero());
+SceneCommand live_relax(bool on);
 
 struct LiveOptions {
   bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
@@ -85,6 +88,9 @@ struct WorldState {
   // Numbers the offers (the Session counts them); SceneStatus::state_revision says which one the
   // World is in, so the UI knows when the snapshot shows the restored state.
   std::uint64_t revision = 0;
+  // The shapes were edited (a crossing changed, an undo of a curve's drag): the springs rest here
+  // and the contact layer is fitted to the new gaps, as for a fresh start.
+  bool reshape = false;
 };
 
 // What the UI hands a running live simulation directly (thread-safe, never blocking either side).
@@ -105,9 +111,14 @@ class LiveHandover {
   virtual void offer_state(std::unique_ptr<WorldState> state) = 0;
 };
 
-// Builds the World of the scene's surfaces (scenario/world_builder). `scenario`, when given,
-// supplies the script kPlayScript plays. Throws s4d::Error with the reason the scene cannot be
-// simulated (no surface, a surface already meeting itself, bad parameters).
+// Builds the World of the scene's surfaces, or of its curves when it has none
+// (scenario/world_builder). `scenario`, when given, supplies the script kPlayScript plays. Throws
+// s4d::Error with the reason the scene cannot be simulated (nothing to simulate, a surface or
+// curve already meeting itself, bad parameters).
+//
+// Curves are edited like clay: the band pulls a strand and its neighbours follow through the
+// chain's springs, collision avoidance keeps every strand from passing through another (so a
+// drag is an isotopy), and on release the springs rest where the curve was left.
 std::unique_ptr<HapticScene> make_live_simulation(const Scene& scene, const Scenario* scenario,
                                                   const LiveOptions& options);
 

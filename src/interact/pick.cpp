@@ -1,8 +1,11 @@
-// Ray against every triangle of the shadow (Möller–Trumbore), sorted, merged per sheet.
+// Ray against every triangle of the shadow (Möller–Trumbore), sorted, merged per sheet; curves
+// by their strands' distance to the cursor on the screen.
 #include "interact/pick.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "interact/view_crossings.hpp"
 
 namespace s4d {
 
@@ -81,6 +84,80 @@ std::vector<SheetHit> pick_sheets(const Scene& scene, const Vec3& origin, const 
     if (!same) merged.push_back(h);
   }
   return merged;
+}
+
+namespace {
+
+struct StrandCandidate {
+  int segment = 0;
+  double pixels = 0, t = 0;
+};
+
+// Where `p` is drawn, in window pixels; false behind the eye.
+bool on_screen(const Camera& camera, const Vec3& p, const Vec2& window, Vec2& out) {
+  if (!p.allFinite() || camera.view_depth(p) <= camera.near_plane) return false;
+  const Vec2 n = camera.ndc(p);
+  out = Vec2((n.x() + 1) * 0.5 * window.x(), (1 - n.y()) * 0.5 * window.y());
+  return out.allFinite();
+}
+
+}  // namespace
+
+std::vector<SheetHit> pick_strands(const Scene& scene, const Camera& camera, const Vec2& cursor, const Vec2& window,
+                                   double pixels) {
+  std::vector<SheetHit> hits;
+  if (!cursor.allFinite() || !(pixels > 0)) return hits;
+  const Vec3 eye = camera.eye();
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    std::vector<std::vector<double>> ws;
+    const std::vector<Polyline<3>> comps = drawn_curve(scene.objects[o].shape, scene.frame, &ws);
+    int first = 0;
+    for (std::size_t c = 0; c < comps.size(); ++c) {
+      const Polyline<3>& pl = comps[c];
+      const int n = static_cast<int>(pl.points.size());
+      std::vector<StrandCandidate> near;
+      for (int k = 0; k < static_cast<int>(pl.segment_count()); ++k) {
+        Vec2 a, b;
+        if (!on_screen(camera, pl.seg_a(static_cast<std::size_t>(k)), window, a) ||
+            !on_screen(camera, pl.seg_b(static_cast<std::size_t>(k)), window, b))
+          continue;
+        const Vec2 ab = b - a;
+        const double l2 = ab.squaredNorm();
+        const double t = l2 > 0 ? std::clamp((cursor - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+        const double d = (a + t * ab - cursor).norm();
+        if (d < pixels) near.push_back({k, d, t});
+      }
+      // Runs of consecutive segments are one strand (a closed component's last run joins its first).
+      std::vector<StrandCandidate> best;
+      for (std::size_t i = 0; i < near.size(); ++i) {
+        const bool continues = i > 0 && near[i].segment == near[i - 1].segment + 1;
+        if (!continues) best.push_back(near[i]);
+        else if (near[i].pixels < best.back().pixels) best.back() = near[i];
+      }
+      if (pl.closed && best.size() > 1 && near.front().segment == 0 &&
+          near.back().segment == static_cast<int>(pl.segment_count()) - 1) {
+        if (best.back().pixels < best.front().pixels) best.front() = best.back();
+        best.pop_back();
+      }
+      for (const StrandCandidate& sc : best) {
+        const std::size_t k = static_cast<std::size_t>(sc.segment);
+        SheetHit h;
+        h.object = static_cast<int>(o);
+        h.triangle = sc.segment;
+        h.point = pl.seg_a(k) + sc.t * (pl.seg_b(k) - pl.seg_a(k));
+        h.distance = (h.point - eye).norm();
+        h.vertex = first + (sc.t < 0.5 ? sc.segment : (sc.segment + 1) % n);
+        if (c < ws.size() && !ws[c].empty()) {
+          const auto& w = ws[c];
+          h.w = (1 - sc.t) * w[k] + sc.t * w[(k + 1) % static_cast<std::size_t>(n)];
+        }
+        hits.push_back(h);
+      }
+      first += n;
+    }
+  }
+  std::sort(hits.begin(), hits.end(), [](const SheetHit& a, const SheetHit& b) { return a.distance < b.distance; });
+  return hits;
 }
 
 }  // namespace s4d

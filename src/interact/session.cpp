@@ -29,6 +29,33 @@ std::unique_ptr<Device> open_device(const std::string& spec) {
   return make_device(d);
 }
 
+// Calls f(point) for every point of a shape: a surface's vertices, or a curve's components' points
+// in order (the world's order of a body's vertices).
+template <class S, class F>
+void for_each_point(S& shape, F&& f) {
+  std::visit([&](auto& s) {
+    using T = std::decay_t<decltype(s)>;
+    if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+      for (auto& p : s.vertices) f(p);
+    } else {
+      for (auto& c : s.components)
+        for (auto& p : c.points) f(p);
+    }
+  }, shape);
+}
+
+// The bodies' points as a World state of dimension `dim` (body order, nv × dim values).
+std::vector<double> body_positions(const Scene& scene, const std::vector<int>& first, int dim) {
+  std::vector<double> out;
+  for (std::size_t o = 0; o < scene.objects.size() && o < first.size(); ++o) {
+    if (first[o] < 0) continue;
+    for_each_point(scene.objects[o].shape, [&](const auto& p) {
+      for (int k = 0; k < dim; ++k) out.push_back(k < static_cast<int>(p.size()) ? p[k] : 0.0);
+    });
+  }
+  return out;
+}
+
 }  // namespace
 
 // The loop with the session's device around `scene` (the live simulation, or the sketch alone).
@@ -112,25 +139,33 @@ void Session::start() {
 
   std::vector<Vec4> initial;
   std::vector<Triangle> tris;
+  std::vector<std::array<int, 2>> segments;
   for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
     if (first_[o] < 0) continue;
+    for_each_point(doc_.scene.objects[o].shape, [&](const auto& p) {
+      Vec4 q = Vec4::Zero();
+      q.head(p.size()) = p;
+      initial.push_back(q);
+    });
     std::visit([&](const auto& s) {
       using T = std::decay_t<decltype(s)>;
       if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-        for (const auto& p : s.vertices) {
-          Vec4 q = Vec4::Zero();
-          q.template head<T::kDim>() = p;
-          initial.push_back(q);
-        }
         for (const Triangle& t : s.triangles)
           if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
             tris.push_back({t[0] + first_[o], t[1] + first_[o], t[2] + first_[o]});
+      } else {
+        int at = first_[o];
+        for (const auto& c : s.components) {
+          const int n = static_cast<int>(c.points.size());
+          for (int k = 0; k < static_cast<int>(c.segment_count()); ++k) segments.push_back({at + k, at + (k + 1) % n});
+          at += n;
+        }
       }
     }, doc_.scene.objects[o].shape);
   }
-  monitor_ = std::make_unique<SessionMonitor>(std::move(tris), dim_, 2 * doc_.scene.physics.thickness,
-                                              doc_.scenario ? &*doc_.scenario : nullptr, first_, count_,
-                                              std::move(initial));
+  monitor_ = std::make_unique<SessionMonitor>(std::move(tris), std::move(segments), dim_,
+                                              2 * doc_.scene.physics.thickness, doc_.scenario ? &*doc_.scenario : nullptr,
+                                              first_, count_, std::move(initial));
   rate_wall_ = std::chrono::steady_clock::now();
   last_submit_ = rate_wall_;
 }
@@ -140,29 +175,38 @@ void Session::refresh() {
     snapshot_ = nullptr;
     return;
   }
+  {
+    // Objects added or removed since the simulation started (a sketched knot, a knot from the
+    // table, a deleted one): the World takes up the scene as it is now.
+    std::vector<int> first, count;
+    body_vertex_ranges(doc_.scene, first, count);
+    if ((first != first_ || count != count_ || simulation_dimension(doc_.scene) != dim_) && !held()) {
+      const bool paused = snapshot_ && snapshot_->status.simulating && !snapshot_->status.playing;
+      rebuild();
+      if (!loop_) return;
+      if (paused) send(live_command(LiveCode::kPause));
+    }
+  }
   const HapticSnapshot& snap = loop_->snapshot();
   snapshot_ = &snap;
   const int d = snap.point_dimension;
-  // Objects added since the simulation started (a sketched knot) are not bodies of it.
+  // Until the World has taken a handed-over state (an undo, an edit), the scene shows that state,
+  // not the one before it.
   const std::size_t bodies = state_pending() ? 0 : std::min(doc_.scene.objects.size(), first_.size());
   for (std::size_t o = 0; o < bodies; ++o) {
     if (first_[o] < 0) continue;
     SceneObject& obj = doc_.scene.objects[o];
     if (d == 4) {
       if (const auto* s3 = std::get_if<Surface<3>>(&obj.shape)) obj.shape = lift_to_4d(*s3);
+      else if (const auto* c3 = std::get_if<Curve<3>>(&obj.shape)) obj.shape = lift_to_4d(*c3);
     }
-    std::visit([&](auto& s) {
-      using T = std::decay_t<decltype(s)>;
-      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-        constexpr int E = T::kDim;
-        const int n = std::min<int>(static_cast<int>(s.vertices.size()), count_[o]);
-        for (int i = 0; i < n; ++i) {
-          const std::size_t at = static_cast<std::size_t>(first_[o] + i) * static_cast<std::size_t>(d);
-          if (at + static_cast<std::size_t>(d) > snap.points.size()) break;
-          for (int k = 0; k < std::min(E, d); ++k) s.vertices[i][k] = snap.points[at + static_cast<std::size_t>(k)];
-        }
-      }
-    }, obj.shape);
+    int i = 0;
+    for_each_point(obj.shape, [&](auto& p) {
+      if (i >= count_[o]) return;
+      const std::size_t at = static_cast<std::size_t>(first_[o] + i++) * static_cast<std::size_t>(d);
+      if (at + static_cast<std::size_t>(d) > snap.points.size()) return;
+      for (int k = 0; k < std::min(static_cast<int>(p.size()), d); ++k) p[k] = snap.points[at + static_cast<std::size_t>(k)];
+    });
   }
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - rate_wall_).count();
@@ -273,6 +317,7 @@ void Session::open_saved(const SessionFile& saved, const std::string& path, cons
       if (std::find(w->pinned.begin(), w->pinned.end(), v) == w->pinned.end()) w->pinned.push_back(v);
     w->play = sim.playing;
     w->time = sim.time;
+    w->reshape = curves_are_bodies(doc_.scene);
     offer_state(std::move(w));
   }
 }
@@ -335,20 +380,27 @@ void Session::restore(DocumentState state) {
   }
   if (handover_) {
     auto w = std::make_unique<WorldState>();
-    for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
-      if (first_[o] < 0) continue;
-      std::visit([&](const auto& sh) {
-        using T = std::decay_t<decltype(sh)>;
-        if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-          for (const auto& p : sh.vertices)
-            for (int k = 0; k < dim_; ++k) w->positions.push_back(k < T::kDim ? p[k] : 0.0);
-        }
-      }, doc_.scene.objects[o].shape);
-    }
+    w->positions = body_positions(doc_.scene, first_, dim_);
     w->pinned = state.pinned;
+    if (curves_are_bodies(doc_.scene)) {  // clay: it rests as it was, and stays editable
+      w->reshape = true;
+      w->play = !snapshot_ || snapshot_->status.playing;
+    }
     offer_state(std::move(w));
   }
   if (restore_view) restore_view(state);
+}
+
+void Session::shapes_edited() {
+  if (!handover_) return;
+  auto w = std::make_unique<WorldState>();
+  w->positions = body_positions(doc_.scene, first_, dim_);
+  w->reshape = true;
+  w->play = !snapshot_ || snapshot_->status.playing;
+  if (snapshot_)
+    for (std::size_t v = 0; v < snapshot_->flags.size(); ++v)
+      if (snapshot_->flags[v] & 1) w->pinned.push_back(static_cast<int>(v));
+  offer_state(std::move(w));
 }
 
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }
@@ -379,15 +431,14 @@ Vec3 Session::vertex_shadow(int v) const {
   if (o < 0 || o >= static_cast<int>(doc_.scene.objects.size()))
     return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
   const int local = v - first_[static_cast<std::size_t>(o)];
-  return std::visit([&](const auto& s) -> Vec3 {
-    using T = std::decay_t<decltype(s)>;
-    if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-      if (local >= static_cast<int>(s.vertices.size())) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-      if constexpr (T::kDim == 4) return doc_.scene.frame.shadow(s.vertices[local]);
-      else return s.vertices[local];
-    }
-    return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
-  }, doc_.scene.objects[static_cast<std::size_t>(o)].shape);
+  Vec3 at = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  int i = 0;
+  for_each_point(doc_.scene.objects[static_cast<std::size_t>(o)].shape, [&](const auto& p) {
+    if (i++ != local) return;
+    if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) at = doc_.scene.frame.shadow(p);
+    else at = p;
+  });
+  return at;
 }
 
 int Session::first_vertex(int object) const {

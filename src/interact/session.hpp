@@ -53,7 +53,8 @@ class Session {
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  // Takes the document and starts simulating its surfaces. A scene whose physics cannot run
+  // Takes the document and starts simulating its surfaces (or its curves, when it has no surface:
+  // knots are edited as chains in World<3>). A scene whose physics cannot run
   // stays viewable: physics_error() says why and nothing simulates. A device that cannot be
   // opened falls back to the mouse, with the reason in device_error().
   void open(Document doc, const SessionOptions& options);
@@ -84,6 +85,9 @@ class Session {
 
   // Sends a request to the live simulation (false when not simulating or the queue is full).
   bool send(const SceneCommand& cmd);
+  // The scene's simulated shapes were edited in place (a crossing changed): the World takes them
+  // as they are now, its springs resting there. Until it has, refresh() keeps the edit shown.
+  void shapes_edited();
   // The knots' image for the curve explorer (false when not simulating).
   bool offer_curve_image(std::unique_ptr<CurveImage> image);
   // Replaces the loop's device (throws s4d::Error with the reason; the old one keeps running).

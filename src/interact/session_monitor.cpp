@@ -20,17 +20,19 @@ std::vector<Vec<D>> unpack(const std::vector<double>& p) {
   return x;
 }
 
-template <int D>
-void check(const std::vector<Triangle>& tris, const std::vector<double>& points, double search, MonitorResult& r) {
+template <int D, std::size_t K>
+void check(const std::vector<std::array<int, K>>& given, const std::vector<double>& points, double search,
+           MonitorResult& r) {
+  constexpr int k = static_cast<int>(K);
   const std::vector<Vec<D>> x = unpack<D>(points);
-  std::vector<Cell<3>> cells(tris.begin(), tris.end());
+  std::vector<Cell<k>> cells(given.begin(), given.end());
   Vec<D> lo = x.empty() ? Vec<D>::Zero() : x[0], hi = lo;
   for (const Vec<D>& p : x) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  r.true_intersections = static_cast<int>(intersecting_pairs<D, 3>(x, cells, 1e-9 * (hi - lo).norm()).size());
-  SelfProximity<D, 3> prox(std::move(cells));
+  r.true_intersections = static_cast<int>(intersecting_pairs<D, k>(x, cells, 1e-9 * (hi - lo).norm()).size());
+  SelfProximity<D, k> prox(std::move(cells));
   std::vector<ProximityPair<D>> pairs;
   prox.pairs_within(x, search, pairs);
   r.min_gap = std::numeric_limits<double>::infinity();
@@ -39,9 +41,11 @@ void check(const std::vector<Triangle>& tris, const std::vector<double>& points,
 
 }  // namespace
 
-SessionMonitor::SessionMonitor(std::vector<Triangle> triangles, int dim, double search, const Scenario* scenario,
-                               std::vector<int> first, std::vector<int> count, std::vector<Vec4> initial)
+SessionMonitor::SessionMonitor(std::vector<Triangle> triangles, std::vector<std::array<int, 2>> segments, int dim,
+                               double search, const Scenario* scenario, std::vector<int> first, std::vector<int> count,
+                               std::vector<Vec4> initial)
     : triangles_(std::move(triangles)),
+      segments_(std::move(segments)),
       dim_(dim),
       search_(search),
       first_(std::move(first)),
@@ -94,8 +98,13 @@ void SessionMonitor::run() {
     r.valid = true;
     r.sim_time = t;
     try {
-      if (dim_ == 3) check<3>(triangles_, points, search_, r);
-      else check<4>(triangles_, points, search_, r);
+      if (!segments_.empty()) {
+        if (dim_ == 3) check<3>(segments_, points, search_, r);
+        else check<4>(segments_, points, search_, r);
+      } else {
+        if (dim_ == 3) check<3>(triangles_, points, search_, r);
+        else check<4>(triangles_, points, search_, r);
+      }
       if (scenario_) {
         std::vector<Vec4> x(points.size() / static_cast<std::size_t>(dim_), Vec4::Zero());
         for (std::size_t i = 0; i < x.size(); ++i)

@@ -20,7 +20,7 @@ namespace s4d {
 struct MonitorResult {
   bool valid = false;             // false until the first check finished
   double sim_time = 0;            // s, of the state checked
-  int true_intersections = 0;     // triangle pairs (sharing no vertex) that truly meet
+  int true_intersections = 0;     // cell pairs (sharing no vertex) that truly meet
   double min_gap = 0;             // smallest gap between such pairs within `search` (inf beyond)
   std::optional<VerdictResult> verdict;  // the scenario's, when the session has one
   double check_ms = 0;            // wall time of the last round of checks
@@ -29,10 +29,11 @@ struct MonitorResult {
 
 class SessionMonitor {
  public:
-  // triangles: the world's cells (global vertex indices); dim: 3 or 4; search: the gap range
-  // reported (2 δ); scenario: judged live when given (first/count/initial as VerdictJudge's).
-  SessionMonitor(std::vector<Triangle> triangles, int dim, double search, const Scenario* scenario,
-                 std::vector<int> first, std::vector<int> count, std::vector<Vec4> initial);
+  // triangles, segments: the world's cells (global vertex indices; one of them empty); dim: 3 or
+  // 4; search: the gap range reported (2 δ); scenario: judged live when given (first/count/initial
+  // as VerdictJudge's).
+  SessionMonitor(std::vector<Triangle> triangles, std::vector<std::array<int, 2>> segments, int dim, double search,
+                 const Scenario* scenario, std::vector<int> first, std::vector<int> count, std::vector<Vec4> initial);
   ~SessionMonitor();
   SessionMonitor(const SessionMonitor&) = delete;
   SessionMonitor& operator=(const SessionMonitor&) = delete;
@@ -46,6 +47,7 @@ class SessionMonitor {
   void run();
 
   const std::vector<Triangle> triangles_;
+  const std::vector<std::array<int, 2>> segments_;
   const int dim_;
   const double search_;
   std::optional<Scenario> scenario_;

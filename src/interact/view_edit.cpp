@@ -140,6 +140,7 @@ bool change_crossing_under(const ToolView& view, Session& session, std::string& 
     obj.shape = std::move(changed);
     obj.generator.reset();  // edited geometry: saved as a file beside the scene
     obj.source_path.clear();
+    if (session.first_vertex(best->object) >= 0) session.shapes_edited();  // a simulated knot takes it
     message = "changed a crossing of '" + obj.name + "'";
   } catch (const std::exception& e) {
     message = std::string("cannot change that crossing: ") + e.what();

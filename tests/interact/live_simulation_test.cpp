@@ -17,6 +17,8 @@
 #include "shape/knot_curves.hpp"
 #include "interact/curve_explorer.hpp"
 #include "knots/knot_diagram.hpp"
+#include "knots/knot_identify.hpp"
+#include "physics/test_curves.hpp"
 
 namespace s4d {
 namespace {
@@ -244,12 +246,15 @@ TEST(LiveSimulation, OnItsOwnThreadThePhysicsFollowsTheHapticClock) {
   EXPECT_LT(rig.snap().status.sim_time, 1.0);
 }
 
-TEST(LiveSimulation, NoSurfaceNoSimulation) {
+TEST(LiveSimulation, AnEmptySceneHasNothingToSimulateAKnotIsAChain) {
+  EXPECT_THROW(make_live_simulation(Scene{}, nullptr, {}), Error);
   Scene s;
   SceneObject o;
-  o.shape = generate("torus-knot", {});
+  o.shape = generate("torus-knot", {{"n", 120}});
   s.objects.push_back(o);
-  EXPECT_THROW(make_live_simulation(s, nullptr, {}), Error);
+  const auto live = make_live_simulation(s, nullptr, {});
+  EXPECT_EQ(live->point_count(), 120) << "its points are the World's vertices";
+  EXPECT_EQ(live->point_dimension(), 3);
 }
 
 // In R^3 the live simulation's explore walks the knot image the UI offered: a hand traced once
@@ -291,6 +296,148 @@ TEST(LiveSimulation, InR3ExploreWalksTheOfferedKnotImage) {
   }
   EXPECT_EQ(code, diagram_from_curve(knot, Frame<3>()).gauss_code());
   EXPECT_GT(max_force, 0);
+}
+
+// [knots] A knot is a chain in World<3>, dragged through the same loop by a device's button: the
+// view is the mapping's (identity here: the shadow is the xy plane, the depth z toward the eye).
+Scene knot_scene(const Curve<3>& curve) {
+  Scene s;
+  SceneObject o;
+  o.name = "knot";
+  o.shape = curve;
+  s.objects.push_back(o);
+  s.physics.thickness = 0.1;
+  s.physics.damping = 0.05;
+  return s;
+}
+
+// The sum of the turning angles at its points: 2π for a round circle, more the more it winds.
+double total_curvature(const Curve<3>& c) {
+  const auto& p = c.components[0].points;
+  const std::size_t n = p.size();
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = p[i] - p[(i + n - 1) % n], b = p[(i + 1) % n] - p[i];
+    sum += std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0));
+  }
+  return sum;
+}
+
+Curve<3> knot_of(const HapticSnapshot& snap, const Curve<3>& like) {
+  Curve<3> c = like;
+  std::size_t i = 0;
+  for (auto& comp : c.components)
+    for (Vec3& p : comp.points) {
+      for (int k = 0; k < 3; ++k) p[k] = snap.points[3 * i + static_cast<std::size_t>(k)];
+      ++i;
+    }
+  return c;
+}
+
+// The smallest distance of the knot's segments more than ten apart along it, by trying every pair
+// (a check that shares no code with the engine: each segment sampled at nine points).
+double brute_force_gap(const Curve<3>& c) {
+  const auto& p = c.components[0].points;
+  const int n = static_cast<int>(p.size());
+  double best = INFINITY;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 10; j < n; ++j) {
+      if (j + 10 > n + i) continue;  // near along the chain: kept apart by the chain itself
+      // Sampled densely: fine enough against a gap of the thickness (0.1), with no shared kernel.
+      for (int a = 0; a <= 8; ++a)
+        for (int b = 0; b <= 8; ++b) {
+          const Vec3 x = p[i] + (a / 8.0) * (p[(i + 1) % n] - p[i]);
+          const Vec3 y = p[j] + (b / 8.0) * (p[(j + 1) % n] - p[j]);
+          best = std::min(best, (x - y).norm());
+        }
+    }
+  return best;
+}
+
+// The under strand of the unknot's turned crossing, pushed by the hand straight up through the
+// strand over it: it cannot pass, it pushes that strand ahead of it, and the knot is still the
+// unknot (had it passed, the knot would be the trefoil).
+TEST(LiveSimulation, AStrandDraggedStraightThroughAnotherIsStoppedAndTheNameStays) {
+  const Curve<3> unknot = test::braid_closure({true, true, false}, 240);
+  ASSERT_EQ(identify_knot(unknot).kind, KnotKind::kUnknot);
+  const auto& pts = unknot.components[0].points;
+  const int first = static_cast<int>(std::lround(2.5 / 3 * 120)), second = first + 120;
+  const int under = pts[first].z() < pts[second].z() ? first : second;
+  const DeviceMapping m = unit_mapping();
+  const Vec3 d0 = m.to_device(pts[under]);
+  Rig rig(knot_scene(unknot), std::make_unique<ReplayDevice>(pull(d0, d0 + Vec3(0, 0, 0.1), 1, 50, 1500, 1000), false));
+  rig.loop->run_ticks(400);
+  EXPECT_EQ(rig.snap().status.held_vertex, under) << "the button took the strand at the device's point";
+  const int over = under == first ? second : first;
+  double gap = INFINITY, beneath = INFINITY;
+  for (int t = 0; t < 2100; t += 300) {
+    rig.loop->run_ticks(300);
+    gap = std::min(gap, brute_force_gap(knot_of(rig.snap(), unknot)));
+    const auto& x = rig.snap().points;
+    beneath = std::min(beneath, x[3 * over + 2] - x[3 * under + 2]);
+  }
+  EXPECT_GT(gap, 0.05) << "the strands never met";
+  EXPECT_GT(beneath, 0) << "the pulled strand stayed beneath the other: it pushed it, never passed it";
+  EXPECT_GT(rig.snap().points[3 * over + 2] - pts[over].z(), 0.3) << "the strand over it gave way instead";
+  const KnotIdentification after = identify_knot(knot_of(rig.snap(), unknot));
+  EXPECT_EQ(after.kind, KnotKind::kUnknot) << after.name;
+  EXPECT_EQ(rig.snap().safety.nonfinite, 0u);
+}
+
+// Button 2 holds the shadow: the device's y moves the held point along the depth axis only.
+TEST(LiveSimulation, AlongTheRayAKnotsPointChangesDepthOnly) {
+  const Curve<3> trefoil = test::braid_closure({true, true, true}, 240);
+  const auto& pts = trefoil.components[0].points;
+  const int v = 20;  // between two crossings: nothing over or under it near
+  const DeviceMapping m = unit_mapping();
+  const Vec3 d0 = m.to_device(pts[v]);
+  Rig rig(knot_scene(trefoil), std::make_unique<ReplayDevice>(pull(d0, d0 + Vec3(0, 0.02, 0), 3, 50, 500, 1500), false));
+  rig.loop->run_ticks(2000);
+  EXPECT_EQ(rig.snap().status.grab_mode, 1);
+  EXPECT_EQ(rig.snap().status.held_vertex, v);
+  const Vec3 now(rig.snap().points[3 * v], rig.snap().points[3 * v + 1], rig.snap().points[3 * v + 2]);
+  EXPECT_GT(now.z() - pts[v].z(), 0.7 * 0.25) << "its depth follows the hand's y";
+  EXPECT_LT((now.head<2>() - pts[v].head<2>()).norm(), 0.02) << "its shadow stays where it was";
+  EXPECT_EQ(identify_knot(knot_of(rig.snap(), trefoil)).name, identify_knot(trefoil).name);
+}
+
+// Relax drives the knot by its energy in the same World: the messy unknot comes apart, crossing
+// after crossing, without ever passing through itself; stopping leaves it resting as it is.
+TEST(LiveSimulation, RelaxUntanglesTheUnknotLiveAndStops) {
+  const Curve<3> unknot = test::braid_closure({true, false, true, true, false, true, false}, 280);
+  ASSERT_EQ(identify_knot(unknot).kind, KnotKind::kUnknot);
+  const int before = diagram_from_curve(unknot, Frame<3>()).crossing_count();
+  ASSERT_EQ(before, 7);
+  Rig rig(knot_scene(unknot), std::make_unique<MouseDevice>());
+  rig.loop->send(live_relax(true));
+  rig.loop->run_ticks(10);
+  EXPECT_TRUE(rig.snap().status.relaxing) << rig.snap().status.message;
+  double gap = INFINITY;
+  for (int t = 0; t < 16; ++t) {
+    rig.loop->run_ticks(500);
+    gap = std::min(gap, brute_force_gap(knot_of(rig.snap(), unknot)));
+  }
+  const Curve<3> relaxed = knot_of(rig.snap(), unknot);
+  EXPECT_GT(gap, 0.1) << "strands far apart along the knot never came near";
+  EXPECT_LT(diagram_from_curve(relaxed, Frame<3>()).crossing_count(), before);
+  EXPECT_LT(total_curvature(relaxed), 0.6 * total_curvature(unknot)) << "smoother: it winds less";
+  EXPECT_EQ(identify_knot(relaxed).kind, KnotKind::kUnknot);
+  rig.loop->send(live_relax(false));
+  rig.loop->run_ticks(10);
+  EXPECT_FALSE(rig.snap().status.relaxing);
+  const std::vector<double> stopped = rig.snap().points;
+  rig.loop->run_ticks(300);
+  double moved = 0;
+  for (std::size_t i = 0; i < stopped.size(); ++i) moved = std::max(moved, std::abs(rig.snap().points[i] - stopped[i]));
+  EXPECT_LT(moved, 1e-3) << "stopped, it rests";
+}
+
+TEST(LiveSimulation, RelaxIsRefusedForSurfacesWithAReason) {
+  Rig rig(cloth_scene(6, false), std::make_unique<MouseDevice>());
+  rig.loop->send(live_relax(true));
+  rig.loop->run_ticks(5);
+  EXPECT_FALSE(rig.snap().status.relaxing);
+  EXPECT_NE(std::string(rig.snap().status.message).find("relax works on knots"), std::string::npos);
 }
 
 }  // namespace
