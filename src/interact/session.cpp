@@ -139,7 +139,7 @@ void Session::start() {
 
   std::vector<Vec4> initial;
   std::vector<Triangle> tris;
-  std::vector<std::array<int, 2>> segments;
+  MonitorCurves curves;
   for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
     if (first_[o] < 0) continue;
     for_each_point(doc_.scene.objects[o].shape, [&](const auto& p) {
@@ -156,14 +156,19 @@ void Session::start() {
       } else {
         int at = first_[o];
         for (const auto& c : s.components) {
-          const int n = static_cast<int>(c.points.size());
-          for (int k = 0; k < static_cast<int>(c.segment_count()); ++k) segments.push_back({at + k, at + (k + 1) % n});
+          const int n = static_cast<int>(c.points.size()), m = static_cast<int>(c.segment_count());
+          const int id = static_cast<int>(curves.chains.size());
+          curves.chains.push_back(make_chain(m, c.closed, c.length(), doc_.scene.physics.thickness));
+          for (int k = 0; k < m; ++k) {
+            curves.segments.push_back({at + k, at + (k + 1) % n});
+            curves.places.push_back({id, k});
+          }
           at += n;
         }
       }
     }, doc_.scene.objects[o].shape);
   }
-  monitor_ = std::make_unique<SessionMonitor>(std::move(tris), std::move(segments), dim_,
+  monitor_ = std::make_unique<SessionMonitor>(std::move(tris), std::move(curves), dim_,
                                               2 * doc_.scene.physics.thickness, doc_.scenario ? &*doc_.scenario : nullptr,
                                               first_, count_, std::move(initial));
   rate_wall_ = std::chrono::steady_clock::now();

@@ -20,9 +20,10 @@ std::vector<Vec<D>> unpack(const std::vector<double>& p) {
   return x;
 }
 
-template <int D, std::size_t K>
+// `near(a, b)`: a pair that is no gap (neighbours along a chain).
+template <int D, std::size_t K, class Near>
 void check(const std::vector<std::array<int, K>>& given, const std::vector<double>& points, double search,
-           MonitorResult& r) {
+           Near near, MonitorResult& r) {
   constexpr int k = static_cast<int>(K);
   const std::vector<Vec<D>> x = unpack<D>(points);
   std::vector<Cell<k>> cells(given.begin(), given.end());
@@ -36,16 +37,17 @@ void check(const std::vector<std::array<int, K>>& given, const std::vector<doubl
   std::vector<ProximityPair<D>> pairs;
   prox.pairs_within(x, search, pairs);
   r.min_gap = std::numeric_limits<double>::infinity();
-  for (const auto& p : pairs) r.min_gap = std::min(r.min_gap, p.closest.distance);
+  for (const auto& p : pairs)
+    if (!near(p.a, p.b)) r.min_gap = std::min(r.min_gap, p.closest.distance);
 }
 
 }  // namespace
 
-SessionMonitor::SessionMonitor(std::vector<Triangle> triangles, std::vector<std::array<int, 2>> segments, int dim,
-                               double search, const Scenario* scenario, std::vector<int> first, std::vector<int> count,
+SessionMonitor::SessionMonitor(std::vector<Triangle> triangles, MonitorCurves curves, int dim, double search,
+                               const Scenario* scenario, std::vector<int> first, std::vector<int> count,
                                std::vector<Vec4> initial)
     : triangles_(std::move(triangles)),
-      segments_(std::move(segments)),
+      curves_(std::move(curves)),
       dim_(dim),
       search_(search),
       first_(std::move(first)),
@@ -98,12 +100,14 @@ void SessionMonitor::run() {
     r.valid = true;
     r.sim_time = t;
     try {
-      if (!segments_.empty()) {
-        if (dim_ == 3) check<3>(segments_, points, search_, r);
-        else check<4>(segments_, points, search_, r);
+      const auto along_chain = [this](int a, int b) { return chain_near(curves_.places, curves_.chains, a, b); };
+      const auto never = [](int, int) { return false; };
+      if (!curves_.segments.empty()) {
+        if (dim_ == 3) check<3>(curves_.segments, points, search_, along_chain, r);
+        else check<4>(curves_.segments, points, search_, along_chain, r);
       } else {
-        if (dim_ == 3) check<3>(triangles_, points, search_, r);
-        else check<4>(triangles_, points, search_, r);
+        if (dim_ == 3) check<3>(triangles_, points, search_, never, r);
+        else check<4>(triangles_, points, search_, never, r);
       }
       if (scenario_) {
         std::vector<Vec4> x(points.size() / static_cast<std::size_t>(dim_), Vec4::Zero());

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "physics/model.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/verdict.hpp"
 #include "shape/surface.hpp"
@@ -21,18 +22,27 @@ struct MonitorResult {
   bool valid = false;             // false until the first check finished
   double sim_time = 0;            // s, of the state checked
   int true_intersections = 0;     // cell pairs (sharing no vertex) that truly meet
-  double min_gap = 0;             // smallest gap between such pairs within `search` (inf beyond)
+  double min_gap = 0;             // smallest gap between such pairs within `search` (inf beyond); for
+                                  // curves between strands, not segments near along one chain
   std::optional<VerdictResult> verdict;  // the scenario's, when the session has one
   double check_ms = 0;            // wall time of the last round of checks
   std::uint64_t rounds = 0;
 };
 
+// A world of curves' cells as the monitor checks them: segments (global vertex indices) and where
+// each lies along its chain (physics/model.hpp), so that neighbours along a chain are no "gap".
+struct MonitorCurves {
+  std::vector<Segment> segments;
+  std::vector<ChainPlace> places;  // per segment
+  std::vector<Chain> chains;
+};
+
 class SessionMonitor {
  public:
-  // triangles, segments: the world's cells (global vertex indices; one of them empty); dim: 3 or
+  // triangles, curves: the world's cells (global vertex indices; one of them empty); dim: 3 or
   // 4; search: the gap range reported (2 δ); scenario: judged live when given (first/count/initial
   // as VerdictJudge's).
-  SessionMonitor(std::vector<Triangle> triangles, std::vector<std::array<int, 2>> segments, int dim, double search,
+  SessionMonitor(std::vector<Triangle> triangles, MonitorCurves curves, int dim, double search,
                  const Scenario* scenario, std::vector<int> first, std::vector<int> count, std::vector<Vec4> initial);
   ~SessionMonitor();
   SessionMonitor(const SessionMonitor&) = delete;
@@ -47,7 +57,7 @@ class SessionMonitor {
   void run();
 
   const std::vector<Triangle> triangles_;
-  const std::vector<std::array<int, 2>> segments_;
+  const MonitorCurves curves_;
   const int dim_;
   const double search_;
   std::optional<Scenario> scenario_;

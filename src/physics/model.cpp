@@ -156,6 +156,15 @@ int Model<D>::substeps(double dt) const {
   return std::clamp(static_cast<int>(std::ceil(n)), 1, params.max_substeps);
 }
 
+Chain make_chain(int segments, bool closed, double length, double thickness) {
+  Chain chain;
+  chain.segments = segments;
+  chain.closed = closed;
+  const double reach = std::floor(1 + 1.5 * thickness / (length / std::max(segments, 1)));
+  chain.exclusion = static_cast<int>(std::clamp(std::isfinite(reach) ? reach : 2.0, 2.0, std::max(2.0, segments / 4.0)));
+  return chain;
+}
+
 template <int D>
 std::vector<Spring> make_springs(const Curve<D>& curve, double k, double bending_scale) {
   std::vector<Spring> out;
@@ -244,18 +253,12 @@ void add_vertices(Model<D>& m, const std::vector<Vec<D>>& points, double mass) {
   }
 }
 
-// A chain's segments and where each lies along it. Segments closer along the chain than about
-// 1.5 δ (counted in mean edges) touch through the chain itself: left to its springs.
+// A chain's segments and where each lies along it.
 template <int D>
 void add_chains(Model<D>& m, const Curve<D>& curve, int off, double thickness) {
   for (const Polyline<D>& c : curve.components) {
     const int n = static_cast<int>(c.points.size());
-    Chain chain;
-    chain.segments = static_cast<int>(c.segment_count());
-    chain.closed = c.closed;
-    const double mean = c.length() / chain.segments;
-    const double reach = std::floor(1 + 1.5 * thickness / mean);
-    chain.exclusion = static_cast<int>(std::clamp(reach, 2.0, std::max(2.0, chain.segments / 4.0)));
+    const Chain chain = make_chain(static_cast<int>(c.segment_count()), c.closed, c.length(), thickness);
     const int id = static_cast<int>(m.chains.size());
     m.chains.push_back(chain);
     for (int k = 0; k < chain.segments; ++k) {

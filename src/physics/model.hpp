@@ -83,6 +83,19 @@ struct Chain {
   bool closed = true;
   int exclusion = 1;  // segments at most this many apart along it are left to the springs
 };
+// A chain of `segments` segments and `length` at contact thickness δ: segments closer along it
+// than about 1.5 δ (counted in mean edges) are left to its springs, the ring pairs at least.
+Chain make_chain(int segments, bool closed, double length, double thickness);
+// Whether segments s and t lie on one chain at most its exclusion apart along it.
+inline bool chain_near(const std::vector<ChainPlace>& places, const std::vector<Chain>& chains, int s, int t) {
+  const ChainPlace& p = places[static_cast<std::size_t>(s)];
+  const ChainPlace& q = places[static_cast<std::size_t>(t)];
+  if (p.chain != q.chain) return false;
+  const Chain& c = chains[static_cast<std::size_t>(p.chain)];
+  int gap = p.index > q.index ? p.index - q.index : q.index - p.index;
+  if (c.closed) gap = std::min(gap, c.segments - gap);
+  return gap <= c.exclusion;
+}
 
 template <int D>
 struct Model {
@@ -114,15 +127,7 @@ struct Model {
   // Cells sharing a vertex or joined by a mesh edge: kept apart by springs, not by repulsion.
   bool near_adjacent(const Triangle& a, const Triangle& b) const;
   // Segments s and t of one chain at most its exclusion apart along it: kept apart by springs.
-  bool chain_near(int s, int t) const {
-    const ChainPlace& p = segment_place[static_cast<std::size_t>(s)];
-    const ChainPlace& q = segment_place[static_cast<std::size_t>(t)];
-    if (p.chain != q.chain) return false;
-    const Chain& c = chains[static_cast<std::size_t>(p.chain)];
-    int gap = p.index > q.index ? p.index - q.index : q.index - p.index;
-    if (c.closed) gap = std::min(gap, c.segments - gap);
-    return gap <= c.exclusion;
-  }
+  bool chain_near(int s, int t) const { return s4d::chain_near(segment_place, chains, s, t); }
   bool curves() const { return !segments.empty(); }
   // Symplectic substeps needed for a tick dt (1 for the paper's integrator).
   int substeps(double dt) const;

@@ -5,6 +5,7 @@
 #include "interact/grab_tool.hpp"
 #include "interact/pick.hpp"
 #include "interact/session.hpp"
+#include "interact/view_crossings.hpp"
 #include "shape/generators.hpp"
 
 namespace s4d {
@@ -107,6 +108,58 @@ TEST(GrabTool, TabReachesEverySheetAndThePressHoldsTheChosenOne) {
   // Away from the surfaces a press is no grab: the view turns instead.
   in.view.eye = Vec3(4, 4, 5);
   EXPECT_FALSE(tool.press(in, session));
+}
+
+// A knot's strands are picked on the screen: within a few pixels of the cursor, one hit a strand,
+// the nearer first where two cross; the press holds the strand's point (a chain in World<3>).
+TEST(GrabTool, AKnotsStrandIsTakenUnderTheCursorTheNearerFirst) {
+  Document d;
+  SceneObject o;
+  o.name = "trefoil";
+  o.shape = generate("torus-knot", {{"n", 120}});
+  d.scene.objects.push_back(o);
+  SessionOptions opt;
+  opt.threaded = false;
+  opt.async_physics = false;
+  Session session;
+  session.open(std::move(d), opt);
+  ASSERT_TRUE(session.simulating()) << session.physics_error();
+  session.loop()->run_ticks(1);
+  session.refresh();
+
+  ToolInput in;
+  in.view.camera.distance = 10;
+  in.view.camera.aspect = 1;
+  in.view.window = Vec2(400, 400);
+  in.view.eye = in.view.camera.eye();
+  const auto& pts = std::get<Curve<3>>(session.scene().objects[0].shape).components[0].points;
+  auto pixel = [&](const Vec3& p) {
+    const Vec2 n = in.view.camera.ndc(p);
+    return Vec2((n.x() + 1) / 2 * 400, (1 - n.y()) / 2 * 400);
+  };
+  // Point 7, between crossings: one strand under the cursor.
+  in.view.cursor = pixel(pts[7]) + Vec2(3, 0);
+  in.view.ray = (in.view.camera.eye() - pts[7]).normalized() * -1;
+  GrabTool tool;
+  tool.hover(in, session);
+  ASSERT_EQ(tool.hits().size(), 1u);
+  EXPECT_NEAR(tool.hits()[0].vertex, 7, 1);
+  EXPECT_TRUE(pick_strands(session.scene(), in.view.camera, pixel(Vec3::Zero()), in.view.window, 10).empty())
+      << "nothing in the hole of the knot";
+  // A crossing of the view: both strands, the nearer the eye first.
+  const ScreenCrossings crossings = screen_crossings(session.scene(), in.view.camera);
+  ASSERT_EQ(crossings.crossings.size(), 3u);
+  in.view.cursor = pixel(crossings.crossings[0].over);
+  tool.hover(in, session);
+  ASSERT_EQ(tool.hits().size(), 2u);
+  EXPECT_LT(tool.hits()[0].distance, tool.hits()[1].distance);
+  ASSERT_TRUE(tool.press(in, session));
+  session.loop()->run_ticks(2);
+  session.refresh();
+  const int held = session.snapshot()->status.held_vertex;
+  EXPECT_EQ(held, tool.hits()[0].vertex) << "the nearer strand's point";
+  EXPECT_GT(pts[static_cast<std::size_t>(held)].z(), pts[static_cast<std::size_t>(tool.hits()[1].vertex)].z());
+  tool.release(in, session);
 }
 
 TEST(Session, AScenePhysicsCannotRunStaysViewable) {
