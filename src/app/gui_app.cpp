@@ -122,6 +122,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
       model.touch_and_sound_only = !model.touch_and_sound_only;
       model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
     }
+    if (in.key_pressed(GLFW_KEY_L) && !r.tool_drag) Panels::toggle_relax(model);  // the knot energy, live
     if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
       session.record("change the drawing");
       CurveMode& mode = model.scene().view.curve_mode;
@@ -263,6 +264,7 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
   if (const HapticSnapshot* snap = s.snapshot()) {
     j["exploring"] = snap->status.exploring;
     j["probe_w"] = snap->status.probe_w;
+    j["relaxing"] = snap->status.relaxing;
   }
   if (const SketchedRibbon* r = model.ribbon.last()) {
     Json ps = Json::array();

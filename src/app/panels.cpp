@@ -13,6 +13,7 @@
 #include "interact/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "render/diagram_export.hpp"
+#include "scenario/world_builder.hpp"
 #include "shape/describe.hpp"
 
 namespace s4d {
@@ -163,6 +164,7 @@ void Panels::open(GuiModel& model, Document doc) {
   model.fit = fit_of(model.scene());
   model.status = "opened " + spec;
   if (scenario) model.status += ": " + model.session.scenario()->instruction;
+  else if (scene_file && !model.scene().description.empty()) model.status += ": " + model.scene().description;
   if (!model.session.physics_error().empty())
     model.status += " (not simulated: " + model.session.physics_error() + ")";
   if (!model.session.device_error().empty()) model.error = model.session.device_error();
@@ -265,6 +267,12 @@ void Panels::menu_bar(GuiModel& model) {
                         "It becomes a knot of R^3, named live in the Scene panel.\n"
                         "(also: shadow4d knot sketch STROKE --knot --out KNOT)");
     if (ImGui::MenuItem("Knot from the table...")) model.open_knot_table = true;
+    if (ImGui::MenuItem("Exercise: untangle the unknot (Fig. 15)"))
+      open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("a tangled curve that is the unknot: show it by dragging strands (Alt: along the depth)\n"
+                        "until its picture has no crossing; a drag never changes the knot\n"
+                        "(also: shadow4d scenes/fig15-tangled-unknot.json)");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("3_1 ... 10_165, 11n_34, 12a_803, torus knots T(p,q), links; a relaxed 3D curve of it\n"
                         "(also: shadow4d knot make NAME --out K.curve)");
@@ -448,6 +456,19 @@ void Panels::knot_name(const SceneObject& obj) {
                       "(also: shadow4d knot identify FILE)", KnotNames::kLiveCrossings);
 }
 
+void Panels::toggle_relax(GuiModel& model) {
+  Session& s = model.session;
+  if (!s.simulating() || !curves_are_bodies(model.scene())) {
+    model.status = "relax works on knots: open, sketch or create one";
+    return;
+  }
+  const bool on = s.snapshot() && s.snapshot()->status.relaxing;
+  if (!on) s.record("relax the knot");
+  s.send(live_relax(!on));
+  model.status = on ? "relaxing stopped: the knot rests as it is"
+                    : "relaxing the knot, live (L stops it); it never passes through itself, so its name stays";
+}
+
 // [SECTION] Simulation panel
 void Panels::simulation_panel(GuiModel& model) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -461,7 +482,7 @@ void Panels::simulation_panel(GuiModel& model) {
       ImGui::TextWrapped("%s", session.physics_error().c_str());
       ImGui::TextDisabled("the scene stays viewable");
     } else {
-      ImGui::TextWrapped("no surface to simulate (curves are edited with the knot tools)");
+      ImGui::TextWrapped("nothing to simulate: sketch a knot (K), or open or create an object");
     }
     ImGui::End();
     return;
@@ -489,6 +510,15 @@ void Panels::simulation_panel(GuiModel& model) {
   if (ImGui::SliderFloat("time scale", &model.time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
     session.send(live_time_scale(model.time_scale));
   record_tool_setting(model, "change the time scale", [&] { std::swap(model.time_scale, scale_before); });
+  if (curves_are_bodies(model.scene())) {
+    if (ImGui::Button(st.relaxing ? "Stop relaxing (L)" : "Relax (L)")) toggle_relax(model);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the knot energy (repulsion, even spacing, bending) pulls the knot towards a round,\n"
+                        "even shape, live, until stopped; collision avoidance keeps every strand from passing\n"
+                        "through another, so the knot stays the same (also: shadow4d knot relax CURVE --out OUT)");
+    ImGui::SameLine();
+    ImGui::TextDisabled("drag a strand: an isotopy (Alt: along the depth)");
+  }
 
   ImGui::Separator();
   ImGui::TextUnformatted("Physics (applied live)");
@@ -570,7 +600,8 @@ void Panels::simulation_panel(GuiModel& model) {
     session.send(live_command(LiveCode::kClearPins));
   }
   if (st.held_vertex >= 0)
-    ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex, st.grab_mode == 1 ? "(along w)" : "", st.band_force);
+    ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex,
+                st.grab_mode == 1 ? (session.dimension() == 3 ? "(along the depth)" : "(along w)") : "", st.band_force);
 
   ImGui::Separator();
   const SimulationRates r = session.rates();

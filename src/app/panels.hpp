@@ -110,6 +110,9 @@ class Panels {
   static void undo_or_redo(GuiModel& model, bool redo);
   // Takes up a saved session (File > Open of a .s4d, the autosave after a crash).
   static void open_session(GuiModel& model, const SessionFile& saved, const std::string& path);
+  // Relax (the knot energy driving the simulated knots, live) on or off (L, the Simulation
+  // panel); starting it is one undoable step.
+  static void toggle_relax(GuiModel& model);
 
  private:
   void menu_bar(GuiModel& model);

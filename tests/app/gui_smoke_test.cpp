@@ -369,6 +369,100 @@ TEST(GuiSmoke, ATrefoilSketchedByTouchIsNamedAndTheProxyLaggedAtTheStrands) {
   EXPECT_GT(most_glow, 20u) << "a strand glows near the proxy";
 }
 
+
+// [knots] Touch on a knot (issue 26, point 3): a strand of the trefoil pressed at (560, 91) — on its
+// upper left arc as the scene opens — and dragged up and left through the window's input file,
+// with the mouse or the simulated arm following the pointer.
+struct KnotDrag {
+  nlohmann::json before, during, after;
+};
+
+KnotDrag drag_a_trefoil_strand(const std::string& device, bool along_depth, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "drag.txt");
+    f << "5 move 560 92\n10 move 560 91\n30 dump " << (dir / "before.json").string() << "\n";
+    if (along_depth) f << "31 key-down LEFT_ALT\n";
+    f << "32 press left\n";
+    for (int i = 1; i <= 40; ++i)
+      f << 32 + 2 * i << " move " << 560 - (along_depth ? 0 : 2 * i) << " " << 91 - 3 * i / 2 << "\n";
+    f << "115 dump " << (dir / "during.json").string() << "\n116 shot " << (dir / "during.png").string() << "\n"
+      << "117 release left\n";
+    if (along_depth) f << "118 key-up LEFT_ALT\n";
+    f << "170 dump " << (dir / "after.json").string() << "\n171 shot " << (dir / "after.png").string() << "\n172 quit\n";
+  }
+  GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);
+  options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json";
+  options.input = (dir / "drag.txt").string();
+  options.device = device;
+  EXPECT_EQ(run_gui_app(options), 0);
+  KnotDrag d;
+  d.before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
+  d.during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
+  d.after = nlohmann::json::parse(std::ifstream(dir / "after.json"));
+  return d;
+}
+
+Vec3 point3(const nlohmann::json& dump, int v) {
+  const auto& p = dump["positions"];
+  return Vec3(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
+}
+
+void expect_dragged_and_named(const KnotDrag& d) {
+  EXPECT_TRUE(d.before["simulating"].get<bool>()) << d.before["physics_error"];
+  EXPECT_EQ(d.before["dim"].get<int>(), 3) << "the knot is a chain in World<3>";
+  EXPECT_GE(d.before["hits_under_cursor"].get<int>(), 1) << "the cursor is over a strand";
+  EXPECT_EQ(d.before["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d.before["knot_panel_name"];
+  const int held = d.during["held_vertex"].get<int>();
+  ASSERT_GE(held, 0) << "the press took hold of the strand; " << d.during["status"];
+  EXPECT_GT((point3(d.during, held) - point3(d.before, held)).norm(), 0.5) << "the held point followed the hand";
+  int followers = 0;
+  for (int v = 0; v < static_cast<int>(d.during["positions"].size()) / 3; ++v)
+    if (v != held && (point3(d.during, v) - point3(d.before, v)).norm() > 0.1) ++followers;
+  EXPECT_GT(followers, 6) << "its neighbours followed";
+  EXPECT_EQ(d.after["held_vertex"].get<int>(), -1) << "released";
+  EXPECT_EQ(d.during["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d.during["knot_panel_name"];
+  EXPECT_EQ(d.after["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d.after["knot_panel_name"];
+  EXPECT_TRUE(d.after["checked"].get<bool>());
+  EXPECT_EQ(d.after["true_intersections"].get<int>(), 0);
+  EXPECT_EQ(d.after["safety_nonfinite"].get<long long>(), 0);
+}
+
+TEST(GuiSmoke, ADraggedTrefoilStrandMovesAndTheKnotKeepsItsName) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotDrag d = drag_a_trefoil_strand("mouse", false, std::filesystem::temp_directory_path() / "s4d_gui_knot_drag");
+  expect_dragged_and_named(d);
+  EXPECT_EQ(d.during["grab_mode"].get<int>(), 0);
+}
+
+TEST(GuiSmoke, TheSimulatedArmDragsTheTrefoilThroughTheSamePath) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotDrag d = drag_a_trefoil_strand("sim", false, std::filesystem::temp_directory_path() / "s4d_gui_knot_drag_sim");
+  expect_dragged_and_named(d);
+  EXPECT_EQ(d.during["device"].get<std::string>(), "sim");
+  EXPECT_GT(d.during["max_force_output"].get<double>(), 0) << "the arm felt the band";
+}
+
+// Alt held: the point moves along the view's depth axis (the camera looks down -z as the scene
+// opens) by the hand's vertical motion; its shadow stays, and the knot is the same.
+TEST(GuiSmoke, AltDragsAKnotPointAlongTheDepthOnly) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotDrag d = drag_a_trefoil_strand("mouse", true, std::filesystem::temp_directory_path() / "s4d_gui_knot_depth");
+  const int held = d.during["held_vertex"].get<int>();
+  ASSERT_GE(held, 0) << d.during["status"];
+  EXPECT_EQ(d.during["grab_mode"].get<int>(), 1);
+  const Vec3 moved = point3(d.during, held) - point3(d.before, held);
+  EXPECT_GT(std::abs(moved.z()), 0.3) << "along the depth";
+  EXPECT_LT(moved.head<2>().norm(), 0.05) << "its shadow stays";
+  EXPECT_EQ(d.after["knot_panel_name"].get<std::string>().rfind("3_1", 0), 0u) << d.after["knot_panel_name"];
+  EXPECT_EQ(d.after["true_intersections"].get<int>(), 0);
+}
+
 }  // namespace
 }  // namespace s4d
 
