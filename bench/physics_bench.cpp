@@ -1,7 +1,8 @@
 // Physics step costs (issue 5): a crumpled 4D cloth with self-collision at 64² and 128², the spun
-// trefoil at scenario resolution, and the peer comparison with Bullet's btSoftBody on the same 3D
-// cloth (steps per second and pass-throughs left, side by side). Every world is a scene built by the
-// one world builder.
+// trefoil at scenario resolution, a knot of 500 points dragged through itself (issue 26: the drag
+// must run at the 1 kHz haptic rate), and the peer comparison with Bullet's btSoftBody on the same
+// 3D cloth (steps per second and pass-throughs left, side by side). Every world is a scene built by
+// the one world builder.
 #include <benchmark/benchmark.h>
 
 #include <btBulletDynamicsCommon.h>
@@ -105,6 +106,35 @@ void BM_SpunTrefoilStep(benchmark::State& state) {
   state.counters["contacts"] = w.data().last_contacts;
 }
 BENCHMARK(BM_SpunTrefoilStep)->Iterations(1000)->Unit(benchmark::kMillisecond);
+
+// A trefoil of 500 points as the knot scene simulates it (scenes/trefoil-knot.json: thickness 0.24,
+// the tube's diameter), one point held by the window's rubber band (100 N/unit, 2 N at most) and
+// pulled to and fro straight across the knot, through the strands in its way: collision avoidance
+// stops it at them. Timed: a step (the band's force and World::step), 3000 steps, 3 s of drag.
+void BM_KnotDrag500Step(benchmark::State& state) {
+  Scene scene = load_scene(std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json");
+  scene.objects[0].shape = generate("torus-knot", {{"p", 2}, {"q", 3}, {"n", 500}});
+  SceneWorld<3> sw = build_world<3>(scene);
+  World<3>& w = sw.world;
+  const int held = 0;
+  const Vec3 from = w.positions()[held], to = -from;  // across the knot's middle and out beyond
+  int most_contacts = 0, step = 0;
+  for (auto _ : state) {
+    const double u = 0.5 - 0.5 * std::cos(2 * 3.141592653589793 * step / 3000.0);
+    const Vec3 target = from + u * (to - from);
+    Vec3 f = 100 * (target - w.positions()[held]) - 0.5 * w.velocities()[held];
+    if (f.norm() > 2) f *= 2 / f.norm();
+    w.set_external_force(held, f);
+    w.step();
+    most_contacts = std::max(most_contacts, w.data().last_contacts);
+    ++step;
+  }
+  state.counters["vertices"] = w.vertex_count();
+  state.counters["contacts_max"] = most_contacts;
+  state.counters["ccd_freezes"] = static_cast<double>(w.data().warnings.ccd_freezes);
+  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_KnotDrag500Step)->Iterations(3000)->Unit(benchmark::kMillisecond);
 
 // [SECTION] Peer: the same 3D cloth, grid springs, self-collision on, 1000 steps of 1 ms.
 constexpr int kPeerSteps = 1000;
