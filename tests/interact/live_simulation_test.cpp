@@ -17,6 +17,7 @@
 #include "shape/knot_curves.hpp"
 #include "interact/curve_explorer.hpp"
 #include "knots/knot_diagram.hpp"
+#include "io/scene.hpp"
 #include "knots/knot_identify.hpp"
 #include "physics/test_curves.hpp"
 
@@ -430,6 +431,94 @@ TEST(LiveSimulation, RelaxUntanglesTheUnknotLiveAndStops) {
   double moved = 0;
   for (std::size_t i = 0; i < stopped.size(); ++i) moved = std::max(moved, std::abs(rig.snap().points[i] - stopped[i]));
   EXPECT_LT(moved, 1e-3) << "stopped, it rests";
+}
+
+// The Fig. 15 exercise done by hand through the live simulation, as a device (or the mouse's
+// proxy) does it: grab, drag, let go. The tangle's lens between two crossings where one strand is
+// over at both is removed by dragging that strand's middle across the other (a Reidemeister II
+// move): 8 crossings, then 6, 4, 2 and none; the knot reads 'unknot' after every drag, never
+// passing through itself.
+struct Hand {
+  explicit Hand(std::unique_ptr<HapticScene> scene) : live(std::move(scene)) {}
+  std::unique_ptr<HapticScene> live;
+  DeviceMapping mapping = unit_mapping();
+  DeviceState device;
+  std::vector<double> points() const {
+    std::vector<double> x(static_cast<std::size_t>(live->point_count()) * 3);
+    live->copy_points(x);
+    return x;
+  }
+  Vec3 at(int v) const {
+    const auto x = points();
+    return Vec3(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  }
+  void ticks(int n) {
+    for (int i = 0; i < n; ++i) live->step(device, 1e-3);
+  }
+  // Takes point v with the button and moves it to `to` (shadow) over `move` ticks, then lets go.
+  void drag(int v, const Vec3& to, int move = 1500) {
+    const Vec3 from = mapping.to_device(at(v)), end = mapping.to_device(to);
+    device.position = from;
+    device.buttons = 0;
+    ticks(20);
+    device.buttons = 1;
+    ticks(20);
+    for (int i = 1; i <= move; ++i) {
+      device.position = from + (static_cast<double>(i) / move) * (end - from);
+      ticks(1);
+    }
+    ticks(600);
+    device.buttons = 0;
+    ticks(300);
+  }
+};
+
+Curve<3> curve_of(const std::vector<double>& x, const Curve<3>& like) {
+  Curve<3> c = like;
+  std::size_t i = 0;
+  for (auto& comp : c.components)
+    for (Vec3& p : comp.points) {
+      p = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
+      ++i;
+    }
+  return c;
+}
+
+TEST(LiveSimulation, TheFig15TangleComesApartByHand) {
+  const Scene scene = load_scene(std::string(S4D_SOURCE_DIR) + "/scenes/fig15-tangled-unknot.json");
+  const Curve<3>& start = std::get<Curve<3>>(scene.objects[0].shape);
+  const int q = 8;
+  ASSERT_EQ(diagram_from_curve(start, Frame<3>()).crossing_count(), q);
+  LiveOptions lo;
+  lo.mapping = unit_mapping();
+  Hand hand(make_live_simulation(scene, nullptr, lo));
+  // The point of the knot nearest p in the picture.
+  const auto nearest = [&](const Vec2& p) {
+    const std::vector<double> x = hand.points();
+    int best = 0;
+    for (int i = 1; i < static_cast<int>(x.size()) / 3; ++i)
+      if ((Vec2(x[3 * i], x[3 * i + 1]) - p).norm() < (Vec2(x[3 * best], x[3 * best + 1]) - p).norm()) best = i;
+    return best;
+  };
+  std::vector<int> counts{q};
+  // Its band (tools/fig15_tangled_unknot.py) winds 300° round a circle of radius 2, its strands 0.6
+  // either side of it where they are farthest apart: there, between crossings 2k and 2k + 1, lies
+  // each pair's lens.
+  for (const int k : {0, 2, 4, 6}) {
+    const double phi = 300.0 / 180 * std::numbers::pi * (k + 1.0) / q;
+    const Vec2 dir(std::cos(phi), std::sin(phi));
+    const int a = nearest(2.6 * dir), b = nearest(1.4 * dir);
+    const int over = hand.at(a).z() > hand.at(b).z() ? a : b, under = over == a ? b : a;
+    // Across the other strand in the picture, radially, 0.8 beyond it.
+    const Vec3 o = hand.at(over), u = hand.at(under);
+    const double to = u.head<2>().norm() + (u.head<2>().norm() > o.head<2>().norm() ? 0.8 : -0.8);
+    hand.drag(over, Vec3(dir.x() * to, dir.y() * to, o.z()));
+    const Curve<3> now = curve_of(hand.points(), start);
+    counts.push_back(diagram_from_curve(now, Frame<3>()).crossing_count());
+    EXPECT_EQ(identify_knot(now).kind, KnotKind::kUnknot) << "after the drag at crossings " << k << "-" << k + 1;
+    EXPECT_GT(brute_force_gap(now), 0.05);
+  }
+  EXPECT_EQ(counts, (std::vector<int>{8, 6, 4, 2, 0})) << "each drag took a lens away; none is left";
 }
 
 TEST(LiveSimulation, RelaxIsRefusedForSurfacesWithAReason) {
