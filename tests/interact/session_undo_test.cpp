@@ -6,6 +6,9 @@
 #include <thread>
 
 #include "interact/grab_tool.hpp"
+#include "interact/live_simulation.hpp"
+#include "interact/view_edit.hpp"
+#include "knots/knot_identify.hpp"
 #include "interact/session.hpp"
 #include "shape/generators.hpp"
 
@@ -192,6 +195,85 @@ TEST(SessionUndo, QuickUndoRedoUndoOnRunningThreadsEndsWhereTheDragStarted) {
   // The scene the window draws is the snapshot's again.
   s.refresh();
   EXPECT_EQ(s.save_state().simulation.positions, undone);
+}
+
+// [knots] A simulated knot is edited like clay: a drag is one step whose undo puts the knot back and
+// leaves it editable (still playing); a crossing change reaches the World, which keeps it.
+Document trefoil() {
+  Document d;
+  SceneObject o;
+  o.name = "trefoil";
+  o.shape = generate("torus-knot", {{"n", 160}});
+  d.scene.objects.push_back(o);
+  d.scene.physics.thickness = 0.2;
+  return d;
+}
+
+TEST(SessionUndo, AKnotsDragIsUndoneAndTheKnotStaysEditable) {
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  s.open(trefoil(), o);
+  ASSERT_TRUE(s.simulating()) << s.physics_error();
+  s.set_mapping(DeviceMapping::fit(Vec3::Zero(), 3, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
+  const std::vector<double> before = points(s);
+  const Vec3 p0(before[0], before[1], before[2]);
+  s.record("drag vertex 0");
+  s.send(live_grab(0, 0, p0));
+  for (int i = 1; i <= 50; ++i) {
+    s.set_hand(p0 + Vec3(0.02 * i, 0, 0), true);
+    s.loop()->run_ticks(10);
+  }
+  s.send(live_command(LiveCode::kRelease));
+  s.set_hand(p0 + Vec3(1, 0, 0), false);
+  const std::vector<double> dragged = points(s);
+  EXPECT_GT(dragged[0] - before[0], 0.5) << "the point followed the hand";
+  s.loop()->run_ticks(300);
+  const std::vector<double> rested = points(s);
+  EXPECT_NEAR(rested[0], dragged[0], 1e-3) << "released, it rests where it was left";
+
+  ASSERT_TRUE(s.undo());
+  s.loop()->run_ticks(5);
+  s.refresh();
+  EXPECT_TRUE(s.snapshot()->status.playing) << "a knot stays editable after an undo";
+  const std::vector<double> undone = s.snapshot()->points;
+  for (std::size_t i = 0; i < undone.size(); ++i) ASSERT_NEAR(undone[i], before[i], 1e-9) << i;
+  s.loop()->run_ticks(300);
+  EXPECT_NEAR(points(s)[0], before[0], 1e-6) << "and rests there: its springs took the restored shape";
+}
+
+TEST(SessionUndo, ACrossingChangeOfASimulatedKnotReachesTheWorld) {
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  s.open(trefoil(), o);
+  ASSERT_TRUE(s.simulating()) << s.physics_error();
+  points(s);
+  ToolView view;
+  view.camera.distance = 12;
+  view.window = Vec2(400, 400);
+  const ScreenCrossings c = screen_crossings(s.scene(), view.camera);
+  ASSERT_EQ(c.crossings.size(), 3u);
+  const Vec2 n = view.camera.ndc(c.crossings[0].over);
+  view.cursor = Vec2((n.x() + 1) / 2 * 400, (1 - n.y()) / 2 * 400);
+  std::string message;
+  ASSERT_TRUE(change_crossing_under(view, s, message));
+  EXPECT_EQ(message.rfind("changed a crossing", 0), 0u) << message;
+  const Curve<3> edited = std::get<Curve<3>>(s.scene().objects[0].shape);
+  EXPECT_EQ(identify_knot(edited).kind, KnotKind::kUnknot);
+  s.refresh();  // the World has not taken the edit yet: the scene keeps showing it
+  EXPECT_EQ(std::get<Curve<3>>(s.scene().objects[0].shape).components[0].points, edited.components[0].points);
+  s.loop()->run_ticks(200);
+  s.refresh();
+  const Curve<3> now = std::get<Curve<3>>(s.scene().objects[0].shape);
+  EXPECT_EQ(identify_knot(now).kind, KnotKind::kUnknot) << "the World runs the changed knot";
+  double moved = 0;
+  for (std::size_t i = 0; i < now.components[0].points.size(); ++i)
+    moved = std::max(moved, (now.components[0].points[i] - edited.components[0].points[i]).norm());
+  EXPECT_LT(moved, 1e-3) << "and rests in the edited shape";
+  EXPECT_TRUE(s.snapshot()->status.playing);
 }
 
 }  // namespace
