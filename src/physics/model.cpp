@@ -202,8 +202,16 @@ int ModelBuilder<D>::next_vertex() const {
 }
 
 template <int D>
-int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex) {
+int ModelBuilder<D>::take(Body<D> body, double mass_per_vertex) {
+  require(std::isfinite(mass_per_vertex), "mass must be finite");
   const int first = next_vertex();
+  bodies_.push_back(std::move(body));
+  masses_.push_back(mass_per_vertex > 0 ? mass_per_vertex : params_.mass);
+  return first;
+}
+
+template <int D>
+int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex) {
   require(!surface.vertices.empty() && !surface.triangles.empty(),
           "a body needs vertices and triangles");
   for (const Vec<D>& p : surface.vertices) require(p.allFinite(), "a body has a non-finite vertex");
@@ -211,15 +219,11 @@ int ModelBuilder<D>::add_body(const Surface<D>& surface, double mass_per_vertex)
   for (const Triangle& t : surface.triangles)
     for (int i : t) require(i >= 0 && i < nv, "a triangle uses vertex " + std::to_string(i) +
                                                   " of a body with " + std::to_string(nv));
-  require(std::isfinite(mass_per_vertex), "mass must be finite");
-  bodies_.push_back(surface);
-  masses_.push_back(mass_per_vertex > 0 ? mass_per_vertex : params_.mass);
-  return first;
+  return take(surface, mass_per_vertex);
 }
 
 template <int D>
 int ModelBuilder<D>::add_body(const Curve<D>& curve, double mass_per_vertex) {
-  const int first = next_vertex();
   require(!curve.components.empty(), "a curve body needs a component");
   for (const Polyline<D>& c : curve.components) {
     const std::size_t n = c.points.size();
@@ -231,10 +235,7 @@ int ModelBuilder<D>::add_body(const Curve<D>& curve, double mass_per_vertex) {
       require(c.seg_a(k) != c.seg_b(k), "a curve has two equal consecutive points (point " + std::to_string(k) +
                                             "): no direction for its spring");
   }
-  require(std::isfinite(mass_per_vertex), "mass must be finite");
-  bodies_.push_back(curve);
-  masses_.push_back(mass_per_vertex > 0 ? mass_per_vertex : params_.mass);
-  return first;
+  return take(curve, mass_per_vertex);
 }
 
 template <int D>

@@ -155,6 +155,8 @@ class ModelBuilder {
 
  private:
   int next_vertex() const;
+  // Keeps a checked body; returns its first vertex.
+  int take(Body<D> body, double mass_per_vertex);
   PhysicsParams<D> params_;
   std::vector<Body<D>> bodies_;
   std::vector<double> masses_;

@@ -72,6 +72,23 @@ struct Dumped {
   nlohmann::json before, during, after;
 };
 
+// Runs the window on `open` with the device and the input file dir/drag.txt, and reads back the
+// dumps it wrote to dir/before.json, during.json and after.json.
+Dumped run_drag(const std::string& open, const std::string& device, const std::filesystem::path& dir) {
+  GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
+  options.open_spec = open;
+  options.input = (dir / "drag.txt").string();
+  options.device = device;
+  EXPECT_EQ(run_gui_app(options), 0);
+  Dumped d;
+  d.before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
+  d.during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
+  d.after = nlohmann::json::parse(std::ifstream(dir / "after.json"));
+  return d;
+}
+
 Dumped drag_the_spun_trefoil(const std::string& device, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   const auto input = dir / "drag.txt";
@@ -83,18 +100,7 @@ Dumped drag_the_spun_trefoil(const std::string& device, const std::filesystem::p
     f << "110 dump " << (dir / "during.json").string() << "\n111 release left\n"
       << "150 dump " << (dir / "after.json").string() << "\n151 shot " << (dir / "after.png").string() << "\n152 quit\n";
   }
-  GuiOptions options;
-  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
-  std::filesystem::remove(options.autosave);  // no restore offer from an earlier run
-  options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json";
-  options.input = input.string();
-  options.device = device;
-  EXPECT_EQ(run_gui_app(options), 0);
-  Dumped d;
-  d.before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
-  d.during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
-  d.after = nlohmann::json::parse(std::ifstream(dir / "after.json"));
-  return d;
+  return run_drag(std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json", device, dir);
 }
 
 Vec4 vertex(const nlohmann::json& dump, int v) {
@@ -373,9 +379,7 @@ TEST(GuiSmoke, ATrefoilSketchedByTouchIsNamedAndTheProxyLaggedAtTheStrands) {
 // [knots] Touch on a knot (issue 26, point 3): a strand of the trefoil pressed at (560, 91) — on its
 // upper left arc as the scene opens — and dragged up and left through the window's input file,
 // with the mouse or the simulated arm following the pointer.
-struct KnotDrag {
-  nlohmann::json before, during, after;
-};
+using KnotDrag = Dumped;
 
 KnotDrag drag_a_trefoil_strand(const std::string& device, bool along_depth, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
@@ -391,18 +395,7 @@ KnotDrag drag_a_trefoil_strand(const std::string& device, bool along_depth, cons
     if (along_depth) f << "118 key-up LEFT_ALT\n";
     f << "170 dump " << (dir / "after.json").string() << "\n171 shot " << (dir / "after.png").string() << "\n172 quit\n";
   }
-  GuiOptions options;
-  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
-  std::filesystem::remove(options.autosave);
-  options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json";
-  options.input = (dir / "drag.txt").string();
-  options.device = device;
-  EXPECT_EQ(run_gui_app(options), 0);
-  KnotDrag d;
-  d.before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
-  d.during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
-  d.after = nlohmann::json::parse(std::ifstream(dir / "after.json"));
-  return d;
+  return run_drag(std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json", device, dir);
 }
 
 Vec3 point3(const nlohmann::json& dump, int v) {

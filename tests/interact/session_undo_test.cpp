@@ -209,12 +209,17 @@ Document trefoil() {
   return d;
 }
 
-TEST(SessionUndo, AKnotsDragIsUndoneAndTheKnotStaysEditable) {
-  Session s;
+// The session stepped by the test (no loop thread, the World in the tick).
+void open_stepped(Session& s, Document d) {
   SessionOptions o;
   o.threaded = false;
   o.async_physics = false;
-  s.open(trefoil(), o);
+  s.open(std::move(d), o);
+}
+
+TEST(SessionUndo, AKnotsDragIsUndoneAndTheKnotStaysEditable) {
+  Session s;
+  open_stepped(s, trefoil());
   ASSERT_TRUE(s.simulating()) << s.physics_error();
   s.set_mapping(DeviceMapping::fit(Vec3::Zero(), 3, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
   const std::vector<double> before = points(s);
@@ -245,10 +250,7 @@ TEST(SessionUndo, AKnotsDragIsUndoneAndTheKnotStaysEditable) {
 
 TEST(SessionUndo, ACrossingChangeOfASimulatedKnotReachesTheWorld) {
   Session s;
-  SessionOptions o;
-  o.threaded = false;
-  o.async_physics = false;
-  s.open(trefoil(), o);
+  open_stepped(s, trefoil());
   ASSERT_TRUE(s.simulating()) << s.physics_error();
   points(s);
   ToolView view;
