@@ -221,9 +221,9 @@ void KnotSketchTool::update(const ToolInput&, Session& s) {
   CurveSketch* k = s.curve_sketch();
   if (!k) return;
   last_ = k->latest();
-  if (!last_.active) {  // a new loop (a document opened, an undo): start sketching in it
+  if (!last_.active) {  // a new loop (a document opened, an undo, a sketched knot joining the World)
     s.send(sketch_command(SketchCode::kBegin, s.mapping().workspace_centre.z()));
-    if (!begun_) offer_obstacles(s);
+    offer_obstacles(s);  // the new loop has none yet
     begun_ = true;
     finish_seen_ = last_.status.finish_requests;
     return;
