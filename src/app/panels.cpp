@@ -246,7 +246,8 @@ void Panels::menu_bar(GuiModel& model) {
   if (ImGui::BeginMenu("Tools")) {
     if (ImGui::MenuItem("Touch (grab and pull)", "T", model.tool == ToolChoice::kTouch)) model.choose(ToolChoice::kTouch);
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("left-drag a surface: a rubber band pulls the vertex under the cursor (Alt: along w);\n"
+      ImGui::SetTooltip("left-drag a surface, or a knot's strand: a rubber band pulls the point under the cursor\n"
+                        "(Alt: along the shadow ray, w or a knot's depth; a knot never passes through itself);\n"
                         "Tab: the next sheet under the cursor; P or right click: pin / unpin;\n"
                         "the wheel while holding: the hand in depth. On empty space the drag turns the view.");
     if (ImGui::MenuItem("Explore (probe and sound)", "E", model.tool == ToolChoice::kExplore))
