@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/panels.hpp"
+#include "knots/knot_diagram.hpp"
 #include "interact/view_crossings.hpp"
 
 namespace s4d {
@@ -428,7 +429,14 @@ void KnotPanels::unknot_dialog(GuiModel& model, const Frame<3>& view) {
       changed_at_.reset();
       exercise_message_ = "Put back: try another crossing.";
     }
-    const std::size_t key = points_hash(*curve_of(model.scene(), o), view);
+    // Keyed on the diagram, not the points: a simulated knot moves a little at every step (its
+    // springs settle), and its crossings, their numbers and the verdicts change only with it.
+    std::size_t key = unknot_key_;
+    try {
+      key = std::hash<std::string>{}(diagram_from_curve(*curve_of(model.scene(), o), view).signed_gauss_code());
+      for (int i = 0; i < 9; ++i) key = key * 1000003u ^ std::hash<double>{}(view.matrix()(i / 3, i % 3));
+    } catch (const std::exception&) {  // a view that shows no diagram now: keep the last answer
+    }
     if (!changed_at_ && key != unknot_key_ && !unknot_.valid()) {
       unknot_key_ = key;
       unknot_ = std::async(std::launch::async,
