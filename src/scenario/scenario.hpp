@@ -21,11 +21,23 @@ struct VertexSelection {
   int count = 1;
 };
 
+// What an action is when a person does the scenario by hand (Space plays it, the hand is theirs):
+// the scripted hand's own moves are skipped, while the set-up its instruction assumes stays.
+enum class ByHand {
+  kSkip,          // "skip" (the default): the scripted hand's part; by hand the user does it instead
+  kKeep,          // "keep": set-up, also in force by hand (the rod the cloth hangs on, held poles)
+  kUntilGrabbed,  // "until-grabbed": set-up by hand until the user grabs one of its vertices (the
+                  // scripted hand holding the chain up until the user's hand takes it over)
+  kOnly,          // "only": by hand only, standing in for the user's other hand (the end held
+                  // while the user pulls the other); Play script and `shadow4d run` skip it
+};
+
 // A tool as a user would drive it: "hold" pins; "move" pins and carries the vertices by `by`
 // over [from, to] (smooth ramp); "pull" drags them through a force-limited spring to the same
 // moving target (virtual coupling, what a haptic device feels).
 struct ScriptAction {
   std::string kind;
+  ByHand by_hand = ByHand::kSkip;
   VertexSelection select;
   double from = 0, to = 0;   // s
   std::vector<double> by;    // D numbers, m

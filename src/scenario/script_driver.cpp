@@ -46,10 +46,12 @@ std::vector<int> selected_vertices(const Scenario& sc, const std::vector<int>& f
 }
 
 template <int D>
-ScriptDriver<D>::ScriptDriver(const Scenario& scenario, const SceneWorld<D>& world)
+ScriptDriver<D>::ScriptDriver(const Scenario& scenario, const SceneWorld<D>& world, ScriptMode mode)
     : actions_(scenario.script), tool_(static_cast<std::size_t>(world.world.vertex_count()), 0) {
   for (std::size_t i = 0; i < actions_.size(); ++i) {
     const ScriptAction& a = actions_[i];
+    const bool by_hand = a.by_hand != ByHand::kSkip;
+    if (mode == ScriptMode::kScript ? a.by_hand == ByHand::kOnly : !by_hand) continue;
     Tool t;
     t.action = i;
     t.vertices = selected_vertices<D>(scenario, world.first, world.count, world.world.positions(), a.select);
@@ -64,7 +66,7 @@ void ScriptDriver<D>::apply(World<D>& world, double t) {
   const Model<D>& model = world.model();
   for (Tool& tool : tools_) {
     const ScriptAction& a = actions_[tool.action];
-    if (t < a.from) continue;
+    if (t < a.from || tool.dropped) continue;
     if (!tool.engaged) {
       tool.engaged = true;
       tool.start.clear();
@@ -92,15 +94,32 @@ void ScriptDriver<D>::apply(World<D>& world, double t) {
 }
 
 template <int D>
-void ScriptDriver<D>::release(World<D>& world) {
-  for (Tool& tool : tools_) {
-    if (!tool.engaged) continue;
-    for (int v : tool.vertices) {
-      if (actions_[tool.action].kind == "pull") world.set_external_force(v, Vec<D>::Zero());
-      else world.unpin(v);
-    }
-    tool.engaged = false;
+void ScriptDriver<D>::let_go(World<D>& world, Tool& tool) const {
+  if (!tool.engaged) return;
+  const bool pull = actions_[tool.action].kind == "pull";
+  for (int v : tool.vertices) {
+    if (pull) world.set_external_force(v, Vec<D>::Zero());
+    else world.unpin(v);
   }
+  tool.engaged = false;
+}
+
+template <int D>
+void ScriptDriver<D>::release(World<D>& world) {
+  for (Tool& tool : tools_) let_go(world, tool);
+}
+
+template <int D>
+bool ScriptDriver<D>::hand_takes(World<D>& world, int vertex) {
+  bool took = false;
+  for (Tool& tool : tools_) {
+    if (tool.dropped || actions_[tool.action].by_hand != ByHand::kUntilGrabbed) continue;
+    if (std::find(tool.vertices.begin(), tool.vertices.end(), vertex) == tool.vertices.end()) continue;
+    let_go(world, tool);
+    tool.dropped = true;
+    took = true;
+  }
+  return took;
 }
 
 template class ScriptDriver<3>;
