@@ -428,7 +428,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin) 
   const Json root = parse_json(text, file);
   const Ctx ctx{file, ""};
   if (!root.is_object()) ctx.fail(std::string("a scene must be a JSON object, found ") + type_name(root));
-  check_keys(root, ctx, {"version", "description", "objects", "frame", "view", "physics", "scenario"});
+  check_keys(root, ctx, {"version", "description", "instruction", "objects", "frame", "view", "physics", "scenario"});
   if (!root.contains("version")) ctx.fail("missing \"version\" (this program reads version " +
                                           std::to_string(kSceneVersion) + ")");
   const Json& ver = root["version"];
@@ -437,6 +437,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& origin) 
                            std::to_string(kSceneVersion) + ")");
   Scene scene;
   if (root.contains("description")) scene.description = string(root["description"], ctx.at("description"));
+  if (root.contains("instruction")) scene.instruction = string(root["instruction"], ctx.at("instruction"));
   const std::filesystem::path base = origin.parent_path();
   if (root.contains("objects")) {
     const Json& objs = root["objects"];

@@ -102,6 +102,7 @@ struct PhysicsSettings {
 
 struct Scene {
   std::string description;     // what the scene shows, for a person (optional)
+  std::string instruction;     // one line: what to do with it by hand, shown in the window (optional)
   std::vector<SceneObject> objects;
   Frame<4> frame;              // the 4D view rotation; R^3 objects sit at w = 0
   ViewSettings view;

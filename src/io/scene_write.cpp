@@ -100,6 +100,7 @@ std::string scene_text(const Scene& scene, const std::filesystem::path& path, Ob
   Json root;
   root["version"] = kSceneVersion;
   if (!scene.description.empty()) root["description"] = scene.description;
+  if (!scene.instruction.empty()) root["instruction"] = scene.instruction;
   Json objects = Json::array();
   std::set<std::string> mesh_names;
   for (const SceneObject& o : scene.objects) {

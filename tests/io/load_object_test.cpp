@@ -1,6 +1,7 @@
 // load_object / load_scene_or_object: files by extension, generator calls, and clear refusals.
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "io/object_file.hpp"
 #include "io/scene.hpp"
 #include "io_test_util.hpp"
@@ -38,6 +39,26 @@ TEST(LoadObject, GeneratorCalls) {
   const auto& s = std::get<Surface<4>>(o.shape);
   for (const Vec4& v : s.vertices) EXPECT_NEAR(v.norm(), 0.5, 1e-12);
   EXPECT_TRUE(std::holds_alternative<Curve<3>>(load_object("torus-knot").shape));
+}
+
+// "SPEC@x,y,z[,w]" places the object, as a scene's "offset" does (what Create > Add to scene's
+// position writes): a second sphere beside the first instead of on it.
+TEST(LoadObject, AnOffsetAfterAtPlacesTheObject) {
+  const SceneObject here = load_object("sphere:n=8,radius=0.5");
+  const SceneObject there = load_object("sphere:n=8,radius=0.5@1.5,-1,0");
+  EXPECT_EQ(there.placement.offset, Vec4(1.5, -1, 0, 0));
+  ASSERT_TRUE(there.generator.has_value());
+  EXPECT_EQ(there.generator->params.at("radius"), 0.5);
+  const auto& a = std::get<Surface<4>>(here.shape).vertices;
+  const auto& b = std::get<Surface<4>>(there.shape).vertices;
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(b[i] - a[i], Vec4(1.5, -1, 0, 0));
+  EXPECT_EQ(load_object("cloth:n=4@0,0,0,0.25").placement.offset, Vec4(0, 0, 0, 0.25)) << "four numbers: w too";
+  const SceneObject file = load_object((data_dir() / "tetra.off").string() + "@0,0,2");
+  EXPECT_EQ(std::get<Surface<3>>(file.shape).vertices[0].z(),
+            std::get<Surface<3>>(load_object((data_dir() / "tetra.off").string()).shape).vertices[0].z() + 2);
+  EXPECT_THROW(load_object("sphere@1,2"), Error) << "two numbers are no offset: a generator name with '@' is unknown";
+  EXPECT_THROW(load_object("sphere@1,inf,0"), Error);
 }
 
 TEST(LoadObject, RefusalsAreErrorsWithASentence) {
