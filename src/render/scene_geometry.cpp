@@ -388,6 +388,7 @@ class IntersectionOverlay {
           ++sum_.border_ends;
         } else {
           ++sum_.pinch_points;
+          sum_.pinch_at.push_back(e.at);
           append(sphere_mesh(e.at, size_.bead), kPinchPointColour);
         }
       }

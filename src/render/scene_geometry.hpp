@@ -61,6 +61,7 @@ struct IntersectionSummary : ShadowCurveCounts {  // true_points: the beads draw
   // view of a closed surface has an even number), or on a surface's border (where a sheet
   // stops); and nodes where three or more curve pieces meet (a non-generic view of the mesh).
   int pinch_points = 0;
+  std::vector<Vec3> pinch_at;  // where they are, shadow space
   int border_ends = 0;
   int branch_points = 0;
   // The curves' image on the screen (their diagram in this view).
