@@ -39,6 +39,11 @@ std::optional<Vec3> curve_point_under(const ToolView& view, const Curve<3>& curv
   return best;
 }
 
+// A haptic device, not the mouse, is the loop's hand.
+bool device_in_use(const Session& s) {
+  return s.snapshot() && std::string_view(s.snapshot()->device_name) != "mouse";
+}
+
 }  // namespace
 
 std::string ExploreTool::gauss_so_far() const {
@@ -94,27 +99,15 @@ bool ExploreTool::press_curve(const ToolInput& in, Session& s) {
   }
   plane_point_ = *at;
   offer_image(in, s);
-  s.set_hand(plane_point_, true);
-  s.send(live_explore(true, plane_point_));
-  s.take_events();
-  passes_.clear();
-  new_passes_.clear();
-  exploring_ = true;
-  message_ = help();
-  return true;
+  return begin(s);
 }
 
-bool ExploreTool::press(const ToolInput& in, Session& s) {
-  on_curve_ = false;
-  if (press_curve(in, s)) return true;
-  if (on_curve_) return false;
-  const std::vector<SheetHit> hits = pick_sheets(s.scene(), in.view.eye, in.view.ray);
-  if (hits.empty() || !s.simulating() || s.dimension() != 4) {
-    if (!hits.empty() && s.dimension() != 4) message_ = "exploring needs a surface of R^4: its w is what the cues tell";
-    return false;
-  }
-  plane_point_ = hits[0].point;
+// The probe goes out at plane_point_: the mouse's is placed by the tool; a device's by its button
+// (DeviceButton::kExplore: the loop places it at the device's point, which the hand led there).
+bool ExploreTool::begin(Session& s) {
   s.set_hand(plane_point_, true);
+  held_ = true;
+  if (device_in_use(s)) return true;  // follow_device takes the exploration up
   s.send(live_explore(true, plane_point_));
   s.take_events();  // what happened before is not this exploration's
   passes_.clear();
@@ -124,20 +117,67 @@ bool ExploreTool::press(const ToolInput& in, Session& s) {
   return true;
 }
 
+bool ExploreTool::press(const ToolInput& in, Session& s) {
+  if (by_device_) return false;  // the device's probe is out: the mouse turns the view meanwhile
+  on_curve_ = false;
+  if (press_curve(in, s)) return true;
+  if (on_curve_) return false;
+  const std::vector<SheetHit> hits = pick_sheets(s.scene(), in.view.eye, in.view.ray);
+  if (hits.empty() || !s.simulating() || s.dimension() != 4) {
+    if (!hits.empty() && s.dimension() != 4) message_ = "exploring needs a surface of R^4: its w is what the cues tell";
+    return false;
+  }
+  plane_point_ = hits[0].point;
+  return begin(s);
+}
+
 void ExploreTool::drag(const ToolInput& in, Session& s) {
-  if (exploring_) s.set_hand(in.view.on_plane_through(plane_point_), true);
+  if (held_) s.set_hand(in.view.on_plane_through(plane_point_), true);
 }
 
 void ExploreTool::release(const ToolInput& in, Session& s) {
-  if (!exploring_) return;
+  if (!held_) return;
+  held_ = false;
   update(in, s);
-  exploring_ = false;
-  s.send(live_explore(false));
+  if (exploring_ && !by_device_) {  // a device's probe stops with its button, in the loop
+    exploring_ = false;
+    s.send(live_explore(false));
+  }
   s.set_hand(in.view.on_plane_through(plane_point_), false);
   message_ = help();
 }
 
+// A device explores through its button (DeviceButton::kExplore): the loop places the probe at the
+// device's point, and its passes are collected here as the mouse's are.
+void ExploreTool::follow_device(const ToolInput& in, Session& s) {
+  const HapticSnapshot* snap = s.snapshot();
+  const bool device = device_in_use(s);
+  const bool probing = snap && snap->status.exploring;
+  if (by_device_ && !probing) {
+    for (const SceneEvent& e : s.take_events()) {
+      passes_.push_back(e);
+      new_passes_.push_back(e);
+    }
+    exploring_ = by_device_ = false;
+    message_ = help();
+    return;
+  }
+  if (!device || exploring_) return;
+  if (s.dimension() == 3 && (in.time - image_time_ > 0.25 || !(in.view.camera.view() - image_camera_.view()).isZero(1e-12)))
+    offer_image(in, s);  // the knot's image, ready for the button
+  if (!probing) {
+    s.take_events();  // what happened before is not the next exploration's
+    return;
+  }
+  exploring_ = by_device_ = true;
+  on_curve_ = s.dimension() == 3;
+  passes_.clear();
+  new_passes_.clear();
+  message_ = help();
+}
+
 void ExploreTool::update(const ToolInput& in, Session& s) {
+  follow_device(in, s);
   if (!exploring_) return;
   // The knot moves (it is simulated) and the view turns: its image follows a few times a second.
   if (on_curve_ && (in.time - image_time_ > 0.25 || !(in.view.camera.view() - image_camera_.view()).isZero(1e-12)))

@@ -17,6 +17,7 @@ class ExploreTool final : public Tool {
  public:
   const char* name() const override { return "Explore"; }
   std::string help() const override;
+  DeviceButton device_button() const override { return DeviceButton::kExplore; }
   bool press(const ToolInput& in, Session& s) override;
   void drag(const ToolInput& in, Session& s) override;
   void release(const ToolInput& in, Session& s) override;
@@ -34,9 +35,13 @@ class ExploreTool final : public Tool {
 
  private:
   bool press_curve(const ToolInput& in, Session& s);
+  void follow_device(const ToolInput& in, Session& s);
+  bool begin(Session& s);
   void offer_image(const ToolInput& in, Session& s);
 
   bool exploring_ = false;
+  bool by_device_ = false;  // the exploration was started by a device's button
+  bool held_ = false;       // the left button is the tool's (pressed on something to explore)
   bool on_curve_ = false;
   double image_time_ = -1;  // the window's clock when the knot's image was last offered
   Camera image_camera_;

@@ -15,6 +15,7 @@ class GrabTool final : public Tool {
  public:
   const char* name() const override { return "Touch"; }
   std::string help() const override;
+  DeviceButton device_button() const override { return DeviceButton::kGrab; }
   bool press(const ToolInput& in, Session& s) override;
   void drag(const ToolInput& in, Session& s) override;
   void release(const ToolInput& in, Session& s) override;

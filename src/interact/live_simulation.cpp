@@ -169,10 +169,12 @@ namespace {
 template <int D>
 class Core {
  public:
-  Core(const Scene& scene, const Scenario* scenario, bool playing)
-      : start_(scene), settings_(scene.physics), world_(build_world<D>(scene)), playing_(playing) {
+  Core(const Scene& scene, const Scenario* scenario, bool playing, const Scene* reset_to)
+      : start_(reset_to ? *reset_to : scene), settings_(scene.physics), world_(build_world<D>(scene)), playing_(playing) {
+    if (reset_to) added_ = scene;
     if (scenario) scenario_ = *scenario;
     status_.simulating = true;
+    start_by_hand();
   }
 
   const World<D>& world() const { return world_.world; }
@@ -195,9 +197,11 @@ class Core {
       case LiveCode::kStepOnce: single_steps_ += 1; break;
       case LiveCode::kReset: restart(false); break;
       case LiveCode::kPlayScript: restart(true); break;
-      case LiveCode::kStopScript:
-        if (script_) script_->release(w);
+      case LiveCode::kStopScript:  // the user takes over where the script was: its set-up holds on
+        if (!script_) break;
+        script_->release(w);
         script_.reset();
+        start_by_hand();
         break;
       case LiveCode::kTimeScale:
         if (std::isfinite(c.x[0])) time_scale_ = std::clamp(c.x[0], 0.01, 4.0);
@@ -299,6 +303,10 @@ class Core {
     if (hand_.vertex >= 0 && hand_.vertex < w.vertex_count())
       w.set_external_force(hand_.vertex, band_force(hand_, w.positions()[hand_.vertex], w.velocities()[hand_.vertex]));
     if (script_) script_->apply(w, (w.data().steps + 1) * ts);
+    if (setup_) {
+      if (hand_.vertex >= 0) setup_->hand_takes(w, hand_.vertex);
+      setup_->apply(w, (w.data().steps + 1) * ts);
+    }
     w.step();
     return true;
   }
@@ -341,20 +349,36 @@ class Core {
       SceneWorld<D> fresh = build_world<D>(s);
       world_ = std::move(fresh);
     } catch (const std::exception& e) {
-      set_message(status_, e.what());
-      return;
+      // The start of the bodies there before with one added since may meet: back to when it was.
+      if (!added_) {
+        set_message(status_, e.what());
+        return;
+      }
+      Scene a = *added_;
+      a.physics = settings_;
+      try {
+        SceneWorld<D> fresh = build_world<D>(a);
+        world_ = std::move(fresh);
+        set_message(status_, std::string("reset to when the last object was added (from the very start: ") + e.what() + ")");
+      } catch (const std::exception& e2) {
+        set_message(status_, e2.what());
+        return;
+      }
     }
     hand_ = Hand<D>{};
     owed_ = 0;
     script_.reset();
     relaxing_ = false;
     if (with_script && scenario_) {
+      setup_.reset();
       try {
         script_.emplace(*scenario_, world_);
       } catch (const std::exception& e) {
         set_message(status_, e.what());
       }
       playing_ = true;
+    } else {
+      start_by_hand();
     }
   }
 
@@ -426,8 +450,23 @@ class Core {
       w.set_external_force(static_cast<int>(i), (w.model().mass[i] / dt) * (relax_target_[i] - v[i]));
   }
 
+  // The scenario's set-up for doing it by hand (ByHand in scenario.hpp), in force from the start
+  // so that its holds show as pins while the scenario waits, paused.
+  void start_by_hand() {
+    setup_.reset();
+    if (!scenario_) return;
+    try {
+      setup_.emplace(*scenario_, world_, ScriptMode::kByHand);
+      if (setup_->empty()) setup_.reset();
+      else setup_->apply(world_.world, 0);
+    } catch (const std::exception& e) {
+      setup_.reset();
+      set_message(status_, e.what());
+    }
+  }
 
-  Scene start_;
+  Scene start_;                 // where Reset goes
+  std::optional<Scene> added_;  // the scene when an object was last added, if Reset cannot start
   PhysicsSettings settings_;
   std::optional<Scenario> scenario_;
   SceneWorld<D> world_;
@@ -437,7 +476,8 @@ class Core {
   std::vector<Vec<D>> relax_target_;  // nv, m/s
   int relax_countdown_ = 0;
   int relax_every_ = 2;  // steps between evaluations of the knot energy
-  std::optional<ScriptDriver<D>> script_;
+  std::optional<ScriptDriver<D>> script_;  // Play script: the scenario's scripted hand
+  std::optional<ScriptDriver<D>> setup_;   // otherwise: the set-up kept while a person does it
   Hand<D> hand_;
   bool playing_ = true;
   double time_scale_ = 1;
@@ -524,8 +564,8 @@ template <int D>
 class LiveSimulation final : public HapticScene, public LiveHandover, public SketchHost {
  public:
   LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
-      : options_(o), mapping_(o.mapping), frame4_(o.frame) {
-    auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing);
+      : options_(o), mapping_(o.mapping), frame4_(o.frame), button_action_(o.button) {
+    auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing, o.reset_to);
     nv_ = core->vertex_count();
     triangles_ = core->world().model().triangles;
     curves_ = core->world().model().curves();
@@ -537,7 +577,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     }
     params_[kBandStiffness] = {"K", 100, 0, 2000, "N per scene unit"};
     params_[kBandDamping] = {"B", 0.5, 0, 20, "N s per scene unit"};
-    params_[kBandMaxForce] = {"max force", 2, 0.01, 50, "N on the vertex"};
+    // Scenes are in metres and kilograms (1 g a vertex): the chain of Fig. 8 weighs 2.9 N, so the
+    // band carries 5 N, enough to lift it with room to spare. The hand feels that scaled by
+    // kForceScale and the device mapping's stiffness cap, then clamped by the safety (felt()).
+    params_[kBandMaxForce] = {"max force", 5, 0.01, 50, "N on the vertex"};
     params_[kForceScale] = {"force scale", 1, 0, 10, "device N per vertex N"};
     params_[kExploreStiffness] = {"explore K", 200, 0, 1000, "N/m at the device: the navigation spring"};
     params_[kExploreDamping] = {"explore B", 1.0, 0, 10, "N s/m at the device"};
@@ -614,23 +657,12 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
         }
         return;
       case LiveCode::kExplore:
-        if constexpr (D == 3) {  // a knot's image: the probe walks its strand (4.3.1)
-          curve_nav_.install();
-          exploring_ = c.i[1] == 1 && finite_command(c);
-          held_ = -1;
-          if (exploring_ && !curve_nav_.place(Vec3(c.x[0], c.x[1], c.x[2]))) {
-            exploring_ = false;
-            set_message(message_, "no curve to explore here (offer its image first)");
-          }
-          return;
-        }
-        if (!explorer_) {
-          set_message(message_, "exploring needs a surface of R^4 (its w is what the sound tells)");
-          return;
-        }
-        exploring_ = c.i[1] == 1 && finite_command(c);
-        held_ = -1;
-        if (exploring_ && !explorer_->place(positions4(), frame4_, Vec3(c.x[0], c.x[1], c.x[2]))) exploring_ = false;
+        explored_by_button_ = false;
+        if (c.i[1] == 1 && finite_command(c)) start_exploring(Vec3(c.x[0], c.x[1], c.x[2]));
+        else exploring_ = false;
+        return;
+      case LiveCode::kDeviceButton:
+        button_action_ = static_cast<DeviceButton>(std::clamp(c.i[1], 0, 2));
         return;
       case LiveCode::kReset:
       case LiveCode::kPlayScript:
@@ -650,7 +682,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     if (let_go_.exchange(false, std::memory_order_acq_rel)) {
       held_ = -1;
       exploring_ = false;
-      grabbed_by_button_ = false;
+      grabbed_by_button_ = explored_by_button_ = false;
     }
     if (core_) {
       if (WorldState* st = states_.take()) {
@@ -659,11 +691,18 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
       }
     }
     if (button && !button_ && held_ < 0 && !exploring_ && !sketch_.active()) {
-      // A device's button grabs the vertex nearest its point in the shadow (the mouse path sends
-      // kGrab with the vertex under the cursor instead).
-      const int v = nearest(mapping_.to_shadow(device.position), kGrabReach / mapping_.metres_per_unit);
-      if (v >= 0) grab(v, (device.buttons & 2u) ? 1 : 0);
-      grabbed_by_button_ = held_ >= 0;
+      // A device's button does what the active tool does with a press (the mouse path sends the
+      // tool's command with what is under the cursor instead): grab the vertex nearest its point
+      // in the shadow, or start the probe there.
+      const Vec3 at = mapping_.to_shadow(device.position);
+      if (button_action_ == DeviceButton::kGrab) {
+        const int v = nearest(at, kGrabReach / mapping_.metres_per_unit);
+        if (v >= 0) grab(v, (device.buttons & 2u) ? 1 : 0);
+        grabbed_by_button_ = held_ >= 0;
+      } else if (button_action_ == DeviceButton::kExplore) {
+        start_exploring(at);
+        explored_by_button_ = exploring_;
+      }
     }
     if (!button && button_ && grabbed_by_button_) {
       held_ = -1;
@@ -671,6 +710,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
       const SceneCommand release = live_command(LiveCode::kRelease);
       if (core_) core_->command(release);
       else thread_->command(release);
+    }
+    if (!button && button_ && explored_by_button_) {
+      exploring_ = false;
+      explored_by_button_ = false;
     }
     button_ = button;
 
@@ -847,6 +890,22 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     out.engaged = true;
   }
 
+  // The probe placed nearest `at` (shadow): on the surface's sheet in R^4 (5.3), on the knot's
+  // image offered last in R^3 (4.3.1). Stops holding.
+  void start_exploring(const Vec3& at) {
+    held_ = -1;
+    exploring_ = false;
+    if constexpr (D == 3) {
+      curve_nav_.install();
+      exploring_ = curve_nav_.place(at);
+      if (!exploring_) set_message(message_, "no curve to explore here (offer its image first)");
+    } else if (!explorer_) {
+      set_message(message_, "exploring needs a surface of R^4 (its w is what the sound tells)");
+    } else {
+      exploring_ = explorer_->place(positions4(), frame4_, at);
+    }
+  }
+
   // The vertex nearest `point` in the shadow within `radius`. A knot's shadow is the view's plane:
   // there the distance across the line of sight counts, depth only a little (a device need not
   // find a strand's depth to take it; at a crossing the nearer strand in depth wins).
@@ -951,7 +1010,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
   Vec<D> grab_view_ = Vec<D>::Zero();
   Vec3 grab_device_ = Vec3::Zero();
-  bool button_ = false, grabbed_by_button_ = false;
+  bool button_ = false, grabbed_by_button_ = false, explored_by_button_ = false;
+  DeviceButton button_action_ = DeviceButton::kGrab;
   std::atomic<bool> let_go_{false};  // an offered state: the hand lets go at the next tick
   double band_force_ = 0;
 };

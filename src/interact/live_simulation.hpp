@@ -15,6 +15,7 @@
 
 #include "haptics/haptic_scene.hpp"
 #include "interact/device_mapping.hpp"
+#include "interact/tool.hpp"
 #include "io/scene.hpp"
 #include "scenario/scenario.hpp"
 
@@ -25,7 +26,8 @@ enum class LiveCode : int {
   kPlay = 1,
   kPause,
   kStepOnce,   // one time_step, also while paused
-  kReset,      // back to the start: positions, velocities, pins, script, time
+  kReset,      // back to the start: positions, velocities, pins, script, time; a scenario's by-hand
+               // set-up (ScriptMode::kByHand) holds from there
   kTimeScale,  // x0: simulated seconds per second, in [0.01, 4]
   kSettings,   // x: PhysicsSettings (see live_settings)
   kPin,        // i0: vertex, pinned where it is
@@ -40,10 +42,11 @@ enum class LiveCode : int {
   kFrame,        // x0..x15: the 4D view frame, row-major (R^3 worlds ignore it)
   kMapping,      // x0..2 centre, x3..11 axes (row-major), x12 metres per unit, x13..15 workspace centre
   kPlayScript,   // restart from the start with the scenario's script
-  kStopScript,   // let go of what the script holds, keep the state
+  kStopScript,   // let go of what the script holds, keep the state; the by-hand set-up holds on
   kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops; in R^3
                  // the probe walks the knot image last offered (offer_curve_image)
   kRelax,        // i1: 1 starts relaxing the knots (closed curves of R^3) live, 0 stops
+  kDeviceButton, // i1: DeviceButton, what a device's first button does from now on
 };
 
 // SceneEvent kinds of the live simulation.
@@ -65,6 +68,10 @@ SceneCommand live_relax(bool on);
 struct LiveOptions {
   bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
   bool start_playing = true;
+  DeviceButton button = DeviceButton::kGrab;  // until a kDeviceButton command arrives
+  // Where Reset goes (copied), when not the scene simulated from now: the start of bodies that
+  // were there before an object was added, the new ones as they were added (Session::add_object).
+  const Scene* reset_to = nullptr;
   DeviceMapping mapping;       // until a kMapping command arrives
   Frame<4> frame;              // until a kFrame command arrives
   int max_steps_per_tick = 4;  // inline: the most World steps one tick may run (the rest is lag)

@@ -79,6 +79,13 @@ inline std::uint32_t overlay_colour(double r, double g, double b, double a = 1) 
   return c(r) | (c(g) << 8) | (c(b) << 16) | (c(a) << 24);
 }
 
+// What a haptic device's first button does under a tool (the mouse's press reaches the tool itself).
+enum class DeviceButton : int {
+  kGrab = 0,     // hold the vertex nearest the device's point on the rubber band
+  kExplore = 1,  // start the probe there
+  kNone = 2,     // nothing in the simulation: the tool reads the button itself (a sketch draws)
+};
+
 class Tool {
  public:
   virtual ~Tool() = default;
@@ -98,6 +105,7 @@ class Tool {
   virtual bool wheel(double steps, const ToolInput&, Session&) { return false; }
   // Each frame, after the session's refresh: keep up with the simulation (the device's point).
   virtual void update(const ToolInput&, Session&) {}
+  virtual DeviceButton device_button() const { return DeviceButton::kNone; }
   virtual void overlay(Overlay&, const Session&) const {}
   // A status message for the window (what just happened), taken once.
   std::string take_message() { return std::exchange(message_, std::string()); }

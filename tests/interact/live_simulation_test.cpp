@@ -11,9 +11,12 @@
 #include "haptics/mouse_device.hpp"
 #include "haptics/replay_device.hpp"
 #include "interact/live_simulation.hpp"
+#include "core/plane.hpp"
 #include "shape/mesh_checks.hpp"
 #include "scenario/scenario_run.hpp"
+#include "shape/chain.hpp"
 #include "shape/generators.hpp"
+#include "shape/surfaces_4d.hpp"
 #include "shape/knot_curves.hpp"
 #include "interact/curve_explorer.hpp"
 #include "knots/knot_diagram.hpp"
@@ -527,6 +530,177 @@ TEST(LiveSimulation, RelaxIsRefusedForSurfacesWithAReason) {
   rig.loop->run_ticks(5);
   EXPECT_FALSE(rig.snap().status.relaxing);
   EXPECT_NE(std::string(rig.snap().status.message).find("relax works on knots"), std::string::npos);
+}
+
+
+// [By hand] A scenario opened in the window runs, when played with Space, with the set-up its
+// instruction assumes (scenario.hpp ByHand) and the user's hand in place of the scripted one.
+Scenario shipped(const std::string& name) {
+  return load_scenario(std::filesystem::path(S4D_SOURCE_DIR) / "scenarios" / (name + ".json"));
+}
+
+// The scenario's live simulation, opened paused as the window opens it, with a mapping that lays
+// a ball of `radius` about the origin onto the test hand's ±8 cm.
+struct ScenarioRig {
+  Scenario sc;
+  DeviceMapping mapping;
+  std::unique_ptr<HapticLoop> loop;
+  ScenarioRig(const std::string& name, std::unique_ptr<Device> device, double radius) : sc(shipped(name)) {
+    mapping = DeviceMapping::fit(Vec3::Zero(), radius, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.08));
+    LiveOptions o;
+    o.start_playing = false;
+    o.mapping = mapping;
+    o.frame = sc.scene.frame;
+    loop = std::make_unique<HapticLoop>(std::move(device), make_live_simulation(sc.scene, &sc, o));
+  }
+  const HapticSnapshot& snap() { return loop->snapshot(); }
+  Vec3 shadow(const Vec4& p) const { return sc.scene.frame.shadow(p); }
+};
+
+// The mean of vertices [first, first + n) at x.
+Vec4 centroid(const std::vector<Vec4>& x, int first, int n) {
+  Vec4 c = Vec4::Zero();
+  for (int i = first; i < first + n; ++i) c += x[static_cast<std::size_t>(i)];
+  return c / n;
+}
+
+TEST(ByHand, TheClothSlidesOffTheRibbonThatStaysHeld) {
+  ScenarioRig rig("cloth-slides-off-ribbon", std::make_unique<MouseDevice>(), 1.0);
+  rig.loop->run_ticks(20);
+  EXPECT_EQ(rig.snap().status.sim_steps, 0) << "opens paused";
+  EXPECT_EQ(rig.snap().status.pinned, 16) << "the ribbon is held from the start (its 16 vertices)";
+  const std::vector<Vec4> x0 = positions(rig.snap());
+  rig.loop->send(live_command(LiveCode::kPlay));  // Space
+  rig.loop->run_ticks(2500);
+  const std::vector<Vec4> x = positions(rig.snap());
+  double ribbon_moved = 0, cloth_top = -1e9;
+  for (int v = 0; v < 16; ++v) ribbon_moved = std::max(ribbon_moved, (x[v] - x0[v]).norm());
+  for (std::size_t v = 16; v < x.size(); ++v) cloth_top = std::max(cloth_top, x[v].y());
+  EXPECT_EQ(ribbon_moved, 0) << "the ribbon stays where it is held";
+  EXPECT_LT(cloth_top, -0.1) << "the whole cloth slid off and fell below the ribbon (y = 0)";
+  EXPECT_EQ(true_intersections(x, rig.sc.scene), 0);
+}
+
+// Lifting the chain of Fig. 8 by one vertex on the rubber band with its default settings: the
+// scenario's hold lets go when the hand takes the chain, and every element rises with it.
+TEST(ByHand, OneVertexOnTheDefaultBandLiftsTheChain) {
+  const Scenario sc = shipped("chain-4d");
+  const Surface<4>& chain = std::get<Surface<4>>(sc.scene.objects[0].shape);
+  int top = 0;
+  for (int v = 0; v < static_cast<int>(chain.vertices.size()); ++v)
+    if (chain.vertices[v].y() > chain.vertices[top].y()) top = v;
+  const DeviceMapping m = DeviceMapping::fit(Vec3::Zero(), 4.0, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.08));
+  const Vec3 d0 = m.to_device(sc.scene.frame.shadow(chain.vertices[top]));
+  const double lift = 3.0;  // scene units, as the scenario's script lifts it
+  // At rest for 1 s (the chain settles on its hold), the button grabs and lifts over 2.5 s, holds 1.5 s.
+  ScenarioRig rig("chain-4d", std::make_unique<ReplayDevice>(pull(d0, d0 + Vec3(0, lift * m.metres_per_unit, 0), 1, 1000, 2500, 1500), false), 4.0);
+  rig.loop->run_ticks(5);
+  EXPECT_EQ(rig.snap().status.sim_steps, 0);
+  EXPECT_EQ(rig.snap().status.pinned, 17) << "the hold is in force while paused, as pins";
+  rig.loop->send(live_command(LiveCode::kPlay));
+  rig.loop->run_ticks(995);
+  EXPECT_EQ(rig.snap().status.held_vertex, -1);
+  const std::vector<Vec4> settled = positions(rig.snap());
+  rig.loop->run_ticks(20);
+  EXPECT_EQ(rig.snap().status.held_vertex, top) << "the button took the top vertex";
+  EXPECT_EQ(rig.snap().status.pinned, 0) << "the chain's hold let go: the hand holds it now";
+  double most_force = 0;
+  for (int k = 0; k < 40; ++k) {
+    rig.loop->run_ticks(100);
+    most_force = std::max(most_force, rig.snap().status.band_force);
+  }
+  const std::vector<Vec4> x = positions(rig.snap());
+  EXPECT_GT(x[top].y() - settled[top].y(), 0.9 * lift) << "the held vertex followed the hand";
+  // The chain's elements are in the generator's order (sphere, loop, sphere): the last vertices
+  // are the bottom sphere's.
+  const int nv = static_cast<int>(x.size());
+  const int ns = static_cast<int>(uv_sphere<4>(16, kChainSphereRadius, Vec4::Zero()).vertices.size());
+  const double bottom_rise = centroid(x, nv - ns, ns).y() - centroid(settled, nv - ns, ns).y();
+  EXPECT_GT(bottom_rise, 1.0) << "the bottom sphere rose with the hand: the chain holds together in R^4";
+  EXPECT_GT(most_force, 2.5) << "the band carried the chain's weight (about 2.9 N)";
+  EXPECT_LE(most_force, 5.0 + 1e-9) << "and never more than its default limit";
+  EXPECT_LE(rig.snap().max_force_output, 3.3 + 1e-9) << "what the hand felt passed the device's limit";
+  EXPECT_EQ(rig.snap().safety.nonfinite, 0u);
+  EXPECT_EQ(true_intersections(x, rig.sc.scene), 0);
+}
+
+// Tightening by hand: one pole is held by the set-up, the user pulls the other on the band.
+TEST(ByHand, OnePoleHeldTheOtherPulledTheSpunTrefoilStretches) {
+  const Scenario sc = shipped("spun-trefoil-tighten");
+  const Surface<4>& sphere = std::get<Surface<4>>(sc.scene.objects[0].shape);
+  const int last = static_cast<int>(sphere.vertices.size()) - 1;
+  const DeviceMapping m = DeviceMapping::fit(Vec3::Zero(), 3.0, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.08));
+  const Vec3 d0 = m.to_device(sc.scene.frame.shadow(sphere.vertices[0]));
+  const Vec3 away = (sc.scene.frame.shadow(sphere.vertices[0]) - sc.scene.frame.shadow(sphere.vertices[last])).normalized();
+  ScenarioRig rig("spun-trefoil-tighten", std::make_unique<ReplayDevice>(pull(d0, d0 + 1.5 * m.metres_per_unit * away, 1, 100, 1500, 500), false), 3.0);
+  rig.loop->send(live_command(LiveCode::kPlay));
+  rig.loop->run_ticks(2100);
+  EXPECT_EQ(rig.snap().status.held_vertex, 0);
+  EXPECT_EQ(rig.snap().flags[static_cast<std::size_t>(last)], 1) << "the other pole is held (by hand only)";
+  const std::vector<Vec4> x = positions(rig.snap());
+  EXPECT_EQ(x[last], sphere.vertices[last]);
+  EXPECT_GT((x[0] - sphere.vertices[0]).norm(), 1.0) << "the pulled pole went with the hand";
+  EXPECT_EQ(true_intersections(x, rig.sc.scene), 0);
+  // Play script is the scenario's run: the by-hand-only hold is not part of it.
+  rig.loop->send(live_command(LiveCode::kPlayScript));
+  rig.loop->run_ticks(2);
+  EXPECT_EQ(rig.snap().status.pinned, 0) << "the script pulls both poles, holding neither";
+}
+
+// Stopping the script hands the scenario over: the set-up goes on holding where things are.
+TEST(ByHand, StoppingTheScriptKeepsTheSetUp) {
+  ScenarioRig rig("cloth-slides-off-ribbon", std::make_unique<MouseDevice>(), 1.0);
+  rig.loop->send(live_command(LiveCode::kPlayScript));
+  rig.loop->run_ticks(300);
+  rig.loop->send(live_command(LiveCode::kStopScript));
+  rig.loop->run_ticks(300);
+  EXPECT_FALSE(rig.snap().status.script_running);
+  EXPECT_EQ(rig.snap().status.pinned, 16) << "the ribbon is still held";
+  rig.loop->send(live_command(LiveCode::kReset));
+  rig.loop->run_ticks(1);
+  EXPECT_EQ(rig.snap().status.pinned, 16) << "and again after a reset";
+}
+
+// What a device's button does is the active tool's choice: grab (Touch), explore (Explore), or
+// nothing in the simulation (a sketch draws with it itself).
+TEST(LiveSimulation, TheDeviceButtonDoesWhatTheToolDoes) {
+  Scene scene;
+  SceneObject o;
+  o.name = "torus";
+  o.shape = generate("clifford-torus", {{"n", 24}, {"m", 24}});
+  scene.objects.push_back(o);
+  scene.frame.rotate(Plane{2, 3}, 0.5);
+  const Vec3 at = scene.frame.shadow(std::get<Surface<4>>(o.shape).vertices[30]);
+  const Vec3 d0 = unit_mapping().to_device(at);
+  auto run = [&](DeviceButton b, bool switch_live) {
+    LiveOptions lo;
+    lo.mapping = unit_mapping();
+    lo.frame = scene.frame;
+    lo.button = switch_live ? DeviceButton::kGrab : b;
+    Trajectory t = pull(d0, d0 + Vec3(0.005, 0, 0), 1, 50, 150, 300);
+    for (std::size_t i = 250; i < t.ticks.size(); ++i) t.ticks[i].buttons = 0;  // let go after 250 ticks
+    auto loop = std::make_unique<HapticLoop>(std::make_unique<ReplayDevice>(std::move(t), false),
+                                             make_live_simulation(scene, nullptr, lo));
+    if (switch_live) loop->send(live_command(LiveCode::kDeviceButton, 0, static_cast<int>(b)));
+    loop->run_ticks(200);
+    const SceneStatus during = loop->snapshot().status;
+    loop->run_ticks(200);  // the recording ends: the button is up
+    return std::make_pair(during, loop->snapshot().status);
+  };
+  const auto [grab, grab_after] = run(DeviceButton::kGrab, false);
+  EXPECT_GE(grab.held_vertex, 0);
+  EXPECT_FALSE(grab.exploring);
+  EXPECT_EQ(grab_after.held_vertex, -1) << "released with the button";
+  for (bool live : {false, true}) {
+    const auto [explore, explore_after] = run(DeviceButton::kExplore, live);
+    EXPECT_TRUE(explore.exploring) << "the button put the probe out";
+    EXPECT_EQ(explore.held_vertex, -1);
+    EXPECT_LT((Vec3(explore.probe) - at).norm(), 0.3) << "where the device is";
+    EXPECT_FALSE(explore_after.exploring) << "and takes it in with the button";
+  }
+  const auto [none, none_after] = run(DeviceButton::kNone, true);
+  EXPECT_EQ(none.held_vertex, -1);
+  EXPECT_FALSE(none.exploring);
 }
 
 }  // namespace
