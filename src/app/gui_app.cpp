@@ -136,6 +136,8 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     if (tool && (in.key_pressed(GLFW_KEY_ENTER) || in.key_pressed(GLFW_KEY_KP_ENTER)))
       tool->key(ToolKey::kEnter, ti, session);
   }
+  // A device's button does what the active tool does with a press (grab, explore, or draw itself).
+  session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone);
   if (tool) tool->update(ti, session);
   const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
   if (in.released(0) || !in.down(0)) {
@@ -217,8 +219,9 @@ void save_shot(const Image& image, const std::string& path, GuiModel& model) {
 }
 
 // The state a scripted test reads back: the simulation's status, the monitor's checks and every
-// vertex where it is now (world coordinates).
-void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path) {
+// vertex where it is now (world coordinates), and where the view draws the shadow's pinch points.
+void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
+                const Vec2& window) {
   using Json = nlohmann::ordered_json;
   Json j;
   Session& s = model.session;
@@ -243,6 +246,16 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
     j["loop_period_p999_us"] = snap->period.p999_us;
     j["dim"] = snap->point_dimension;
     j["positions"] = snap->points;
+    j["band_force"] = st.band_force;
+    Json pins = Json::array();
+    for (std::size_t v = 0; v < snap->flags.size(); ++v)
+      if (snap->flags[v] & 1) pins.push_back(v);
+    j["pinned_vertices"] = pins;
+  }
+  {  // the World's cells, so a test can check every saved state with a checker of its own
+    Json tris = Json::array();
+    for (const Triangle& t : s.triangles()) tris.push_back({t[0], t[1], t[2]});
+    j["triangles"] = tris;
   }
   const MonitorResult c = s.checks();
   j["checked"] = c.valid;
@@ -272,6 +285,10 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
     j["ribbon_passages"] = ps;
   }
   j["hits_under_cursor"] = model.grab.hits().size();
+  Json hits = Json::array();
+  for (const SheetHit& h : model.grab.hits())
+    hits.push_back({{"w", h.w}, {"vertex", s.first_vertex(h.object) < 0 ? -1 : s.first_vertex(h.object) + h.vertex}});
+  j["hits"] = hits;
   {
     const SketchPublished& k = model.knot.published();
     j["sketch"] = {{"active", k.active},
@@ -291,6 +308,16 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
   knots.dump(knot_panels);
   j["knot_panels"] = knot_panels;
   j["depth_tone"] = model.depth_tone;
+  if (model.intersections.computed) {
+    Json pinch = Json::array();
+    for (const Vec3& p : model.intersections.pinch_at) {
+      ImVec2 px;
+      const bool seen = to_screen(camera, p, window, px);
+      pinch.push_back({{"at", {p.x(), p.y(), p.z()}}, {"pixel", seen ? Json{px.x, px.y} : Json(nullptr)}});
+    }
+    j["pinch_points"] = pinch;
+    j["curve_length"] = model.intersections.length;
+  }
   j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
   j["touch_and_sound_only"] = model.touch_and_sound_only;
   j["sheet"] = model.grab.sheet();
@@ -303,7 +330,7 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
 }
 
 // Keeps the simulation's view of the hand in step with the picture: the 4D frame, and the device
-// workspace laid onto the view's ball (not while a vertex is held: the hand must not jump).
+// workspace laid onto the view's ball as zoomed (not while a vertex is held: the hand must not jump).
 void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, DeviceMapping& sent_mapping) {
   Session& s = model.session;
   if (!s.loop() || !s.snapshot()) return;
@@ -314,7 +341,9 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
   }
   const DeviceCapabilities& caps = s.snapshot()->caps;
   const Mat<3> axes = camera.orientation.normalized().toRotationMatrix();
-  const DeviceMapping m = DeviceMapping::fit(model.scene().view.fit_centre, model.scene().view.fit_radius, axes,
+  // The workspace covers what the view shows: zoomed out, the hand reaches (and lifts) further.
+  const double zoom = model.scene().view.zoom > 0 ? model.scene().view.zoom : 1.0;
+  const DeviceMapping m = DeviceMapping::fit(model.scene().view.fit_centre, model.scene().view.fit_radius / zoom, axes,
                                              caps.workspace_centre(), 0.5 * (caps.workspace_max - caps.workspace_min));
   const bool changed = (m.centre - sent_mapping.centre).norm() + (m.axes - sent_mapping.axes).norm() +
                            std::abs(m.metres_per_unit - sent_mapping.metres_per_unit) >
@@ -545,7 +574,7 @@ int run_gui_app(const GuiOptions& options) {
       shots.clear();
       if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
       model.knot_panel_name = knot_panels.shown_name();
-      for (const std::string& path : dumps) dump_state(model, knot_panels, path);
+      for (const std::string& path : dumps) dump_state(model, knot_panels, path, camera, win);
       dumps.clear();
       glfwSwapBuffers(window);
       if (last) break;

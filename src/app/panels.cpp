@@ -164,7 +164,7 @@ void Panels::open(GuiModel& model, Document doc) {
   model.fit = fit_of(model.scene());
   model.status = "opened " + spec;
   if (scenario) model.status += ": " + model.session.scenario()->instruction;
-  else if (scene_file && !model.scene().description.empty()) model.status += ": " + model.scene().description;
+  else if (!model.scene().instruction.empty()) model.status += ": " + model.scene().instruction;
   if (!model.session.physics_error().empty())
     model.status += " (not simulated: " + model.session.physics_error() + ")";
   if (!model.session.device_error().empty()) model.error = model.session.device_error();
@@ -439,7 +439,7 @@ void Panels::scene_panel(GuiModel& model) {
   if (remove >= 0) {
     model.session.record("delete " + scene.objects[static_cast<std::size_t>(remove)].name);
     scene.objects.erase(scene.objects.begin() + remove);
-    model.session.rebuild();  // the simulation restarts from the objects as they are
+    model.session.objects_changed();  // the other bodies keep their motion and pins
   }
   ImGui::End();
 }
@@ -630,12 +630,19 @@ void Panels::simulation_panel(GuiModel& model) {
 // [SECTION] Scenario banner
 void Panels::scenario_banner(GuiModel& model) {
   const auto& sc = model.session.scenario();
-  if (!sc) return;
+  const std::string& what_to_do = model.scene().instruction;
+  if (!sc && what_to_do.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 30), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0));
   ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(std::max(200.0f, std::min(560.0f, display.x - 700)), 400));
-  ImGui::Begin("Scenario", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Begin(sc ? "Scenario" : "What to do", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(200.0f, std::min(540.0f, display.x - 720)));
+  if (!sc) {  // a scene that says what to do with it by hand
+    ImGui::TextWrapped("%s", what_to_do.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+    return;
+  }
   ImGui::TextWrapped("%s: %s", sc->name.c_str(), sc->instruction.c_str());
   ImGui::TextDisabled("Space plays, Play script shows it done; shadow4d run %s gives the same verdict",
                       sc->file.filename().string().c_str());
@@ -743,6 +750,15 @@ void Panels::generator_dialog(GuiModel& model) {
     }
     if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
   }
+  // Where the object goes: its offset from where the generator puts it (usually the origin).
+  float at[4] = {static_cast<float>(generator_offset_[0]), static_cast<float>(generator_offset_[1]),
+                 static_cast<float>(generator_offset_[2]), static_cast<float>(generator_offset_[3])};
+  const bool in_r4 = info->dim == 4;
+  if (in_r4 ? ImGui::DragFloat4("position (x y z w)", at, 0.01f, -100.0f, 100.0f, "%.2f")
+            : ImGui::DragFloat3("position (x y z)", at, 0.01f, -100.0f, 100.0f, "%.2f"))
+    generator_offset_ = Vec4(at[0], at[1], at[2], in_r4 ? at[3] : 0.0f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("added beside what is in the scene (also: a scene's \"offset\", or NAME:k=v@x,y,z[,w])");
   const bool replace = ImGui::Button("Replace scene");
   ImGui::SameLine();
   const bool add = ImGui::Button("Add to scene");
@@ -750,8 +766,9 @@ void Panels::generator_dialog(GuiModel& model) {
     try {
       SceneObject obj;
       obj.generator = GeneratorCall{info->name, generator_params_};
-      obj.shape = generate(info->name, generator_params_);
-      obj.name = info->name + "-" + std::to_string(++model.created);
+      obj.placement.offset = generator_offset_;
+      obj.shape = placed(generate(info->name, generator_params_), obj.placement);
+      obj.name = info->name + "-" + std::to_string(model.created + 1);
       if (replace) {
         Document d;
         d.spec = info->name;
@@ -759,10 +776,10 @@ void Panels::generator_dialog(GuiModel& model) {
         open(model, std::move(d));
         if (info->dim == 4) model.view.turn_to_generic_view();
       } else {
-        model.session.record("create " + obj.name);
-        model.scene().objects.push_back(std::move(obj));
-        model.session.rebuild();  // the simulation restarts from the objects as they are
+        const std::string label = "create " + obj.name;
+        model.session.add_object(std::move(obj), label);  // the bodies there keep their motion and pins
       }
+      ++model.created;
       model.status = "created " + info->name;
     } catch (const std::exception& e) {
       model.error = e.what();

@@ -135,6 +135,7 @@ class Panels {
   FileBrowser diagram_browser_;
   std::string generator_;      // generator whose dialog is open
   Params generator_params_;
+  Vec4 generator_offset_ = Vec4::Zero();  // where Add to scene puts the object
   bool generator_dialog_open_ = false;
   KnotNames knot_names_;  // the Scene panel's named knots
   std::chrono::steady_clock::time_point last_settings_send_{};

@@ -47,6 +47,12 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
   }
   RibbonSketchOptions o = options;
   if (!(o.width > 0)) o.width = 0.04 * view_size;  // a ribbon a twenty-fifth of the view wide
+  // A stroke that comes back to where it began is a loop, as a knot's stroke closes there.
+  double length = 0;
+  for (std::size_t i = 1; i < stroke.size(); ++i) length += (stroke[i].at - stroke[i - 1].at).norm();
+  const double gap = (stroke.back().at - stroke.front().at).norm();
+  const bool came_back = !o.closed && gap <= 1.5 * o.width && length > 6 * o.width;
+  if (came_back) o.closed = true;
   try {
     const SketchObstacles obstacles = sketch_obstacles(s.scene());
     const SketchedRibbon r = ribbon_from_sketch(stroke, obstacles.surfaces, s.scene().frame, toward_eye, o, obstacles.names);
@@ -56,11 +62,12 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
     made_ = true;
     int below = 0;
     for (const RibbonPassage& p : r.passages) below += p.below;
-    char b[200];
-    std::snprintf(b, sizeof b, "sketched %s: %zu passage(s), %zu above and %d below in w; simulating it", name.c_str(),
-                  r.passages.size(), r.passages.size() - static_cast<std::size_t>(below), below);
+    char b[256];
+    std::snprintf(b, sizeof b, "sketched %s%s: %zu passage(s), %zu above and %d below in w; simulating it", name.c_str(),
+                  came_back ? " (a loop: the stroke came back to its start)" : "", r.passages.size(),
+                  r.passages.size() - static_cast<std::size_t>(below), below);
     message_ = b;
-    s.rebuild();
+    s.objects_changed();  // the bodies there keep their motion and pins
     return true;
   } catch (const std::exception& e) {
     message_ = std::string("no ribbon: ") + e.what();

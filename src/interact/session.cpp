@@ -102,15 +102,119 @@ void Session::open(Document doc, const SessionOptions& options) {
   history_.clear();
   doc_ = std::move(doc);
   options_ = options;
-  start();
+  start_shapes_.clear();
+  for (const SceneObject& o : doc_.scene.objects) start_shapes_.emplace(o.name, o.shape);
+  start(options_.start_playing);
 }
 
 void Session::rebuild() {
   close();
-  start();
+  start(options_.start_playing);
 }
 
-void Session::start() {
+namespace {
+
+int vertex_count_of(const Shape& shape) {
+  return std::visit([](const auto& s) -> int {
+    using T = std::decay_t<decltype(s)>;
+    if constexpr (std::is_same_v<T, Surface<T::kDim>>) return static_cast<int>(s.vertices.size());
+    return -1;
+  }, shape);
+}
+
+}  // namespace
+
+// The scene as it is, each object at its start shape (by name) where it has one of its size.
+Scene Session::reset_scene() const {
+  Scene s = doc_.scene;
+  for (SceneObject& o : s.objects) {
+    const auto it = start_shapes_.find(o.name);
+    if (it != start_shapes_.end() && it->second.index() == o.shape.index() &&
+        vertex_count_of(it->second) == vertex_count_of(o.shape))
+      o.shape = it->second;
+  }
+  return s;
+}
+
+void Session::objects_changed() {
+  // The state of each body now, by name: velocities and pins from the last snapshot (its
+  // positions are the scene's shapes already).
+  struct Kept {
+    int count = 0;
+    std::vector<double> velocities;  // count × dimension
+    std::vector<int> pinned;         // local indices
+  };
+  std::map<std::string, Kept> kept;
+  bool playing = options_.start_playing;
+  const int old_dim = dim_;
+  if (simulating() && snapshot_ && snapshot_->point_dimension == dim_) {
+    const HapticSnapshot& snap = *snapshot_;
+    playing = snap.status.playing;
+    for (std::size_t o = 0; o < body_names_.size(); ++o) {
+      if (first_[o] < 0) continue;
+      Kept k;
+      k.count = count_[o];
+      const auto at = static_cast<std::size_t>(first_[o]) * static_cast<std::size_t>(dim_);
+      const auto n = static_cast<std::size_t>(count_[o]) * static_cast<std::size_t>(dim_);
+      if (at + n <= snap.velocities.size())
+        k.velocities.assign(snap.velocities.begin() + static_cast<std::ptrdiff_t>(at),
+                            snap.velocities.begin() + static_cast<std::ptrdiff_t>(at + n));
+      for (int i = 0; i < count_[o]; ++i) {
+        const auto v = static_cast<std::size_t>(first_[o] + i);
+        if (v < snap.flags.size() && (snap.flags[v] & 1)) k.pinned.push_back(i);
+      }
+      kept.emplace(body_names_[o], std::move(k));
+    }
+  }
+  std::erase_if(start_shapes_, [&](const auto& e) {  // removed: a later namesake starts afresh
+    return std::none_of(doc_.scene.objects.begin(), doc_.scene.objects.end(),
+                        [&](const SceneObject& o) { return o.name == e.first; });
+  });
+  for (const SceneObject& o : doc_.scene.objects) start_shapes_.emplace(o.name, o.shape);  // new: as added
+  close();
+  start(false);
+  if (!handover_ || dim_ != old_dim) return;
+  auto state = std::make_unique<WorldState>();
+  state->play = playing;
+  for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
+    if (first_[o] < 0) continue;
+    const SceneObject& obj = doc_.scene.objects[o];
+    std::visit([&](const auto& sh) {
+      using T = std::decay_t<decltype(sh)>;
+      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+        for (const auto& p : sh.vertices)
+          for (int k = 0; k < dim_; ++k) state->positions.push_back(k < T::kDim ? p[k] : 0.0);
+      }
+    }, obj.shape);
+    const auto it = kept.find(obj.name);
+    const bool same = it != kept.end() && it->second.count == count_[o] &&
+                      it->second.velocities.size() == static_cast<std::size_t>(count_[o] * dim_);
+    if (same) {
+      state->velocities.insert(state->velocities.end(), it->second.velocities.begin(), it->second.velocities.end());
+      for (int i : it->second.pinned) state->pinned.push_back(first_[o] + i);
+    } else {
+      state->velocities.resize(state->velocities.size() + static_cast<std::size_t>(count_[o] * dim_), 0.0);
+    }
+  }
+  handover_->offer_state(std::move(state));
+}
+
+void Session::add_object(SceneObject obj, const std::string& label) {
+  Scene trial = doc_.scene;
+  trial.objects.push_back(obj);
+  const int dim = simulation_dimension(trial);
+  try {
+    if (dim == 3) build_world<3>(trial);
+    else if (dim == 4) build_world<4>(trial);
+  } catch (const std::exception& e) {
+    throw Error("cannot add " + obj.name + ": " + e.what());
+  }
+  record(label);
+  doc_.scene.objects.push_back(std::move(obj));
+  objects_changed();
+}
+
+void Session::start(bool start_playing) {
   physics_error_.clear();
   device_error_.clear();
   rates_ = {};
@@ -118,6 +222,9 @@ void Session::start() {
   offered_ = {};
   dim_ = simulation_dimension(doc_.scene);
   body_vertex_ranges(doc_.scene, first_, count_);
+  body_names_.clear();
+  for (const SceneObject& o : doc_.scene.objects) body_names_.push_back(o.name);
+  triangles_.clear();
   std::unique_ptr<HapticScene> live;
   if (dim_ == 0) {  // curves only: nothing to simulate, but the hand still sketches through the loop
     start_loop(std::make_unique<CurveSketchScene>());
@@ -126,8 +233,11 @@ void Session::start() {
   try {
     LiveOptions lo;
     lo.async_physics = options_.async_physics;
-    lo.start_playing = options_.start_playing;
+    lo.start_playing = start_playing;
     lo.frame = doc_.scene.frame;
+    lo.button = device_button_;
+    const Scene reset_to = reset_scene();
+    lo.reset_to = &reset_to;
     const Scenario* sc = doc_.scenario ? &*doc_.scenario : nullptr;
     live = make_live_simulation(doc_.scene, sc, lo);
   } catch (const std::exception& e) {
@@ -168,10 +278,13 @@ void Session::start() {
       }
     }, doc_.scene.objects[o].shape);
   }
+  triangles_ = tris;
   monitor_ = std::make_unique<SessionMonitor>(std::move(tris), std::move(curves), dim_,
                                               2 * doc_.scene.physics.thickness, doc_.scenario ? &*doc_.scenario : nullptr,
                                               first_, count_, std::move(initial));
   rate_wall_ = std::chrono::steady_clock::now();
+  rate_sim_time_ = 0;  // the new World starts at t = 0
+  rate_steps_ = 0;
   last_submit_ = rate_wall_;
 }
 
@@ -214,6 +327,12 @@ void Session::refresh() {
     });
   }
   const auto now = std::chrono::steady_clock::now();
+  if (snap.status.sim_steps < rate_steps_ || snap.status.sim_time < rate_sim_time_) {
+    // The simulation went back (a reset): measure afresh from here, never across the jump.
+    rate_wall_ = now;
+    rate_steps_ = snap.status.sim_steps;
+    rate_sim_time_ = snap.status.sim_time;
+  }
   const double wall = std::chrono::duration<double>(now - rate_wall_).count();
   if (wall >= 1.0) {
     rates_.real_time_ratio = (snap.status.sim_time - rate_sim_time_) / wall;
@@ -411,6 +530,12 @@ void Session::shapes_edited() {
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }
 
 bool Session::send(const SceneCommand& cmd) { return loop_ && loop_->send(cmd); }
+
+void Session::set_device_button(DeviceButton action) {
+  if (action == device_button_) return;
+  device_button_ = action;
+  send(live_command(LiveCode::kDeviceButton, 0, static_cast<int>(action)));
+}
 
 void Session::set_device(const std::string& spec) {
   auto device = open_device(spec);  // throws with the reason

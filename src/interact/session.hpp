@@ -5,6 +5,7 @@
 #pragma once
 #include <chrono>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,9 +59,18 @@ class Session {
   // stays viewable: physics_error() says why and nothing simulates. A device that cannot be
   // opened falls back to the mouse, with the reason in device_error().
   void open(Document doc, const SessionOptions& options);
-  // Starts the simulation again from the scene's current shapes (after objects were added or
-  // removed); velocities are lost, the view is kept.
+  // Starts the simulation again from the scene's current shapes; velocities are lost, the view
+  // is kept.
   void rebuild();
+  // After objects were added to or removed from the scene: simulates the scene as it is now, the
+  // bodies still there (matched by name) keeping their velocities and pins and going on playing
+  // as they were, the new ones at rest. Reset then returns the old bodies to their start and the
+  // new ones to where they were added.
+  void objects_changed();
+  // Adds `obj` to the scene as one undoable step called `label` (objects_changed). Throws
+  // s4d::Error with the reason the scene cannot be simulated with it (it meets a surface already
+  // there): nothing changes then.
+  void add_object(SceneObject obj, const std::string& label);
   void close();
 
   Scene& scene() { return doc_.scene; }
@@ -90,6 +100,8 @@ class Session {
   void shapes_edited();
   // The knots' image for the curve explorer (false when not simulating).
   bool offer_curve_image(std::unique_ptr<CurveImage> image);
+  // What a device's first button does (the active tool's choice); kept across rebuilds.
+  void set_device_button(DeviceButton action);
   // Replaces the loop's device (throws s4d::Error with the reason; the old one keeps running).
   void set_device(const std::string& spec);
   const std::string& device_spec() const { return options_.device; }
@@ -128,6 +140,8 @@ class Session {
   // nothing to simulate); nullptr when no loop runs.
   CurveSketch* curve_sketch();
 
+  // The simulated World's triangles (global vertex indices, body order); empty when not simulating.
+  const std::vector<Triangle>& triangles() const { return triangles_; }
   // World vertices of scene object o: [first_vertex(o), first_vertex(o) + vertex_count(o)).
   int first_vertex(int object) const;
   int vertex_count(int object) const;
@@ -147,8 +161,9 @@ class Session {
   std::uint64_t lost_events() const { return lost_events_; }
 
  private:
-  void start();
+  void start(bool start_playing);
   void start_loop(std::unique_ptr<HapticScene> scene);
+  Scene reset_scene() const;
   void restore(DocumentState state);
   void offer_state(std::unique_ptr<WorldState> state);
 
@@ -158,6 +173,10 @@ class Session {
   std::unique_ptr<SessionMonitor> monitor_;
   std::string physics_error_, device_error_;
   std::vector<int> first_, count_;
+  std::vector<Triangle> triangles_;
+  std::vector<std::string> body_names_;          // per scene object when the simulation started
+  std::map<std::string, Shape> start_shapes_;    // by object name: where Reset puts it
+  DeviceButton device_button_ = DeviceButton::kGrab;
   int dim_ = 0;
   const HapticSnapshot* snapshot_ = nullptr;
   SimulationRates rates_;
