@@ -7,15 +7,44 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "app/gui_app.hpp"
+#include "core/frame.hpp"
 #include "core/vec.hpp"
 #include "io/image.hpp"
 #include "io/session_file.hpp"
+#include "shape/mesh_checks.hpp"
 
 namespace s4d {
 namespace {
+
+// A dump the window wrote (its `dump` event), with every saved state checked by the test-only
+// checker that shares no code with the engine (shape/mesh_checks.hpp): no two triangles of the
+// simulated World that share no vertex may meet.
+nlohmann::json checked_dump(const std::filesystem::path& path) {
+  nlohmann::json j = nlohmann::json::parse(std::ifstream(path));
+  if (!j.contains("positions") || !j.contains("triangles") || j["triangles"].empty()) return j;
+  const int dim = j["dim"].get<int>();
+  const auto& p = j["positions"];
+  std::vector<Triangle> tris;
+  for (const auto& t : j["triangles"]) tris.push_back({t[0].get<int>(), t[1].get<int>(), t[2].get<int>()});
+  int meeting = 0;
+  if (dim == 4) {
+    Surface<4> s;
+    for (std::size_t i = 0; i + 3 < p.size(); i += 4) s.vertices.emplace_back(p[i], p[i + 1], p[i + 2], p[i + 3]);
+    s.triangles = tris;
+    meeting = independent::self_intersections<4>(s).intersecting_pairs;
+  } else {
+    Surface<3> s;
+    for (std::size_t i = 0; i + 2 < p.size(); i += 3) s.vertices.emplace_back(p[i], p[i + 1], p[i + 2]);
+    s.triangles = tris;
+    meeting = independent::self_intersections<3>(s).intersecting_pairs;
+  }
+  EXPECT_EQ(meeting, 0) << path << ": the independent checker found triangles that meet";
+  return j;
+}
 
 TEST(GuiSmoke, WindowShowsTheObjectAndThePanels) {
   const char* display = std::getenv("DISPLAY");
@@ -83,9 +112,9 @@ Dumped run_drag(const std::string& open, const std::string& device, const std::f
   options.device = device;
   EXPECT_EQ(run_gui_app(options), 0);
   Dumped d;
-  d.before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
-  d.during = nlohmann::json::parse(std::ifstream(dir / "during.json"));
-  d.after = nlohmann::json::parse(std::ifstream(dir / "after.json"));
+  d.before = checked_dump(dir / "before.json");
+  d.during = checked_dump(dir / "during.json");
+  d.after = checked_dump(dir / "after.json");
   return d;
 }
 
@@ -173,7 +202,7 @@ nlohmann::json run_script(const std::string& open, const std::vector<std::string
   options.open_spec = open;
   options.input = (dir / "script.txt").string();
   EXPECT_EQ(run_gui_app(options), 0);
-  return nlohmann::json::parse(std::ifstream(dir / "state.json"));
+  return checked_dump(dir / "state.json");
 }
 
 // Explore (E): pressed on the Clifford torus's far (blue) sheet and moved across the lower curve
@@ -245,9 +274,9 @@ TEST(GuiSmoke, CtrlZUndoesADragAndCtrlShiftZRedoesIt) {
   l.push_back("107 key-up LEFT_SHIFT");
   l.push_back("107 key-up LEFT_CONTROL");
   const auto after = run_script(std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json", l, dir);
-  const auto before = nlohmann::json::parse(std::ifstream(dir / "before.json"));
-  const auto paused = nlohmann::json::parse(std::ifstream(dir / "paused.json"));
-  const auto undone = nlohmann::json::parse(std::ifstream(dir / "undone.json"));
+  const auto before = checked_dump(dir / "before.json");
+  const auto paused = checked_dump(dir / "paused.json");
+  const auto undone = checked_dump(dir / "undone.json");
   int held = -1;  // the vertex the drag pulled furthest: the one it held
   double furthest = 0;
   for (int v = 0; v < static_cast<int>(before["positions"].size()) / 4; ++v)
@@ -342,8 +371,8 @@ TEST(GuiSmoke, ATrefoilSketchedByTouchIsNamedAndTheProxyLaggedAtTheStrands) {
   options.open_spec = (dir / "empty.json").string();
   options.input = (dir / "script.txt").string();
   ASSERT_EQ(run_gui_app(options), 0);
-  const auto drawn = nlohmann::json::parse(std::ifstream(dir / "drawn.json"));
-  const auto d = nlohmann::json::parse(std::ifstream(dir / "state.json"));
+  const auto drawn = checked_dump(dir / "drawn.json");
+  const auto d = checked_dump(dir / "state.json");
   EXPECT_EQ(drawn["tool"].get<std::string>(), "Sketch a knot");
   EXPECT_TRUE(drawn["sketch"]["active"].get<bool>()) << "the loop runs the sketch in an empty scene";
   EXPECT_EQ(drawn["sketch"]["components"].get<int>(), 1);
@@ -502,7 +531,7 @@ TEST(GuiSmoke, AnUnfinishedRunsAutosaveIsOfferedOrWithRestoreTakenUp) {
     options.input = script.string();
     options.restore = restore;
     EXPECT_EQ(run_gui_app(options), 0);
-    const auto d = nlohmann::json::parse(std::ifstream(dir / "state.json"));
+    const auto d = checked_dump(dir / "state.json");
     if (restore) {
       EXPECT_FALSE(d["restore_offered"].get<bool>());
       EXPECT_EQ(d["objects"], 1) << "the autosave's square, not the torus";
@@ -649,6 +678,310 @@ TEST(GuiSmoke, TouchAndSoundOnlyHidesTheKnotsName) {
   const auto hidden = run("hidden", {"3 move 100 700", "5 key H"});
   EXPECT_TRUE(hidden["touch_and_sound_only"].get<bool>());
   EXPECT_TRUE(hidden["knot_panels"]["name_hidden"].get<bool>());
+}
+
+// The window run on `open` with the input lines `lines` (frames from 1), its dumps in `dir`.
+void run_window(const std::string& open, std::vector<std::string> lines, const std::filesystem::path& dir,
+                const std::string& device = "mouse") {
+  std::filesystem::create_directories(dir);
+  // The file's frames must not go back: events are listed by frame, those of one frame in order.
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const std::string& a, const std::string& b) { return std::stoi(a) < std::stoi(b); });
+  {
+    std::ofstream f(dir / "script.txt");
+    for (const std::string& l : lines) f << l << "\n";
+  }
+  GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);
+  options.open_spec = open;
+  options.input = (dir / "script.txt").string();
+  options.device = device;
+  ASSERT_EQ(run_gui_app(options), 0);
+}
+
+std::string at(int frame, const std::string& event) { return std::to_string(frame) + " " + event; }
+
+// World vertex v of a dump in view coordinates (through the dumped 4D frame): the shadow and w.
+Vec4 in_view(const nlohmann::json& d, int v) {
+  Mat<4> m;
+  for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = d["frame"][static_cast<std::size_t>(i)].get<double>();
+  return Frame<4>(m).to_view(vertex(d, v));
+}
+
+// Tab under the cursor goes to the next sheet there, round all of them and back to the first; a
+// press then takes the vertex of the sheet Tab chose, not the one nearest the eye. The spun
+// trefoil's shadow folds six sheets onto the pixel used.
+TEST(GuiSmoke, TabCyclesThroughEverySheetUnderTheCursor) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_tab";
+  const int tabs = 6;
+  std::vector<std::string> l{at(3, "key SPACE"), at(10, "move 650 400"), at(14, "move 651 400"),
+                             at(20, "dump " + (dir / "tab0.json").string())};
+  for (int k = 1; k <= tabs; ++k) {
+    l.push_back(at(20 + 6 * k, "key TAB"));
+    l.push_back(at(22 + 6 * k, "dump " + (dir / ("tab" + std::to_string(k) + ".json")).string()));
+  }
+  l.push_back(at(80, "shot " + (dir / "tab.png").string()));
+  l.push_back(at(90, "quit"));
+  run_window(std::string(S4D_SOURCE_DIR) + "/scenes/spun-trefoil.json", l, dir);
+  const auto first = checked_dump(dir / "tab0.json");
+  const int n = first["hits_under_cursor"].get<int>();
+  ASSERT_GE(n, 4) << "the knotted sphere's shadow folds several sheets under this pixel";
+  std::set<double> ws;
+  for (const auto& h : first["hits"]) ws.insert(std::round(h["w"].get<double>() * 1000) / 1000);
+  EXPECT_EQ(static_cast<int>(ws.size()), n) << "each hit is another sheet (another w)";
+  EXPECT_EQ(first["sheet"].get<int>(), 0) << "the nearest to the eye first";
+  for (int k = 1; k <= tabs; ++k) {
+    const auto d = checked_dump(dir / ("tab" + std::to_string(k) + ".json"));
+    EXPECT_EQ(d["sheet"].get<int>(), k % n) << "after " << k << " Tab(s)";
+  }
+
+  // Tab to the last sheet and press: the band holds that sheet's vertex.
+  const auto dir2 = dir / "press";
+  std::vector<std::string> p{at(3, "key SPACE"), at(10, "move 650 400"), at(14, "move 651 400")};
+  for (int k = 1; k < n; ++k) p.push_back(at(16 + 2 * k, "key TAB"));
+  p.push_back(at(40, "dump " + (dir2 / "before.json").string()));
+  p.push_back(at(41, "press left"));
+  p.push_back(at(50, "dump " + (dir2 / "held.json").string()));
+  p.push_back(at(51, "release left"));
+  p.push_back(at(55, "quit"));
+  run_window(std::string(S4D_SOURCE_DIR) + "/scenes/spun-trefoil.json", p, dir2);
+  const auto before = checked_dump(dir2 / "before.json");
+  const auto held = checked_dump(dir2 / "held.json");
+  ASSERT_EQ(before["sheet"].get<int>(), n - 1);
+  EXPECT_EQ(held["held_vertex"].get<int>(), before["hits"][static_cast<std::size_t>(n - 1)]["vertex"].get<int>())
+      << "the press took the sheet Tab chose";
+  EXPECT_NE(held["held_vertex"].get<int>(), before["hits"][0]["vertex"].get<int>());
+}
+
+// Alt-drag: the held vertex moves along the shadow ray (its w) and its shadow stays put.
+TEST(GuiSmoke, AnAltDragMovesAVertexInWAndLeavesItsShadow) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_alt";
+  std::vector<std::string> l{at(10, "move 800 450"), at(14, "move 801 450"), at(20, "dump " + (dir / "before.json").string()),
+                             at(21, "key-down LEFT_ALT"), at(22, "press left")};
+  for (int i = 1; i <= 30; ++i) l.push_back(at(22 + 2 * i, "move 801 " + std::to_string(450 - 3 * i)));
+  l.push_back(at(110, "dump " + (dir / "during.json").string()));
+  l.push_back(at(111, "release left"));
+  l.push_back(at(112, "key-up LEFT_ALT"));
+  l.push_back(at(115, "quit"));
+  run_window(std::string(S4D_SOURCE_DIR) + "/scenes/clifford-torus.json", l, dir);
+  const auto before = checked_dump(dir / "before.json");
+  const auto during = checked_dump(dir / "during.json");
+  const int v = during["held_vertex"].get<int>();
+  ASSERT_GE(v, 0);
+  EXPECT_EQ(during["grab_mode"].get<int>(), 1) << "along w";
+  const Vec4 a = in_view(before, v), b = in_view(during, v);
+  EXPECT_GT(std::abs(b.w() - a.w()), 0.1) << "w followed the hand";
+  EXPECT_LT((b.head<3>() - a.head<3>()).norm(), 0.25 * std::abs(b.w() - a.w())) << "the shadow stayed (mostly) put";
+}
+
+// P and a right click pin the vertex under the cursor and unpin it again; P while holding pins the
+// held vertex where it is and lets go.
+TEST(GuiSmoke, PAndARightClickPinAndUnpin) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_pin";
+  auto dump = [&](int f, const std::string& n) { return at(f, "dump " + (dir / (n + ".json")).string()); };
+  std::vector<std::string> l{at(10, "move 800 450"), at(14, "move 801 450"), dump(20, "p0"),
+                             at(22, "key P"),         dump(26, "p1"),       at(28, "key P"),
+                             dump(32, "p2"),          at(34, "press right"), at(35, "release right"),
+                             dump(40, "p3"),          at(42, "press right"), at(43, "release right"),
+                             dump(48, "p4"),          at(50, "move 820 560"), at(54, "move 821 560"),
+                             at(56, "press left"),    at(60, "move 825 550"), at(64, "move 830 540"),
+                             at(66, "key P"),         dump(72, "p5"),       at(74, "release left"),
+                             at(80, "quit")};
+  run_window(std::string(S4D_SOURCE_DIR) + "/scenes/clifford-torus.json", l, dir);
+  const auto p0 = checked_dump(dir / "p0.json"), p1 = checked_dump(dir / "p1.json"), p2 = checked_dump(dir / "p2.json");
+  const auto p3 = checked_dump(dir / "p3.json"), p4 = checked_dump(dir / "p4.json"), p5 = checked_dump(dir / "p5.json");
+  EXPECT_EQ(p0["pinned"].get<int>(), 0);
+  ASSERT_EQ(p1["pinned_vertices"].size(), 1u) << "P pinned the vertex under the cursor";
+  EXPECT_EQ(p1["pinned_vertices"][0].get<int>(), p0["hits"][0]["vertex"].get<int>());
+  EXPECT_EQ(p2["pinned"].get<int>(), 0) << "P again unpinned it";
+  EXPECT_EQ(p3["pinned_vertices"], p1["pinned_vertices"]) << "a right click pinned it";
+  EXPECT_EQ(p4["pinned"].get<int>(), 0) << "and another unpinned it";
+  EXPECT_EQ(p5["held_vertex"].get<int>(), -1) << "P while holding lets go";
+  ASSERT_EQ(p5["pinned_vertices"].size(), 1u);
+  EXPECT_NE(p5["pinned_vertices"][0].get<int>(), p1["pinned_vertices"][0].get<int>()) << "the held vertex, pinned";
+}
+
+// Fig. 14 in the window: a closed ribbon sketched through a sphere (its stroke comes back to its
+// start), above in w where it goes in and below where it comes out, is linked with it: with
+// gravity on, lifting the ribbon by a vertex lifts the sphere. Sketched above twice, it is not, and
+// the sphere falls away.
+nlohmann::json lift_a_sketched_ribbon(bool below_on_the_way_out, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  {
+    // A scenario, so that it opens paused and the sphere waits for the sketch; light vertices
+    // (0.4 g) so that the band's 5 N carries the sphere and a finely sampled loop.
+    std::ofstream scene(dir / "sphere.json");
+    scene << R"({"version": 1,
+      "objects": [{"name": "sphere", "generator": "sphere", "params": {"n": 16, "radius": 0.5}}],
+      "frame": {"rotate": {"zw": 40}},
+      "physics": {"gravity": [0, -9.81, 0, 0], "thickness": 0.03, "mass": 0.0004, "stiffness": 300,
+                  "bending_scale": 0.2, "damping": 0.004, "spring_damping": 0.02, "friction": 0.3},
+      "scenario": {"name": "lift", "instruction": "Sketch a ribbon loop through the sphere and lift it.",
+                   "duration": 1, "verdict": {"kind": "lifted", "object": "sphere", "numbers": {"axis": 1, "min_rise": 0}}}})";
+  }
+  // Zoomed out, the sphere's shadow is a disc of about 140 px round the view's centre (640, 400).
+  // The stroke: a circle of 80 px round its top (640, 260), anticlockwise on the screen from its
+  // right (up first): its lower arc dips through the sphere, in on the left and out on the right.
+  const double cx = 640, cy = 260, r = 80;
+  std::vector<std::string> l{at(3, "move 640 400"), at(5, "move 641 400"), at(8, "scroll -10"), at(12, "key R")};
+  const int n = 72, first = 30;
+  bool shift = false;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * 3.14159265358979 * i / n;
+    const int x = static_cast<int>(std::lround(cx + r * std::cos(t))), y = static_cast<int>(std::lround(cy - r * std::sin(t)));
+    if (i == 0) {
+      l.push_back(at(first - 6, "move " + std::to_string(x) + " " + std::to_string(y)));
+      l.push_back(at(first - 4, "move " + std::to_string(x) + " " + std::to_string(y + 1)));
+      l.push_back(at(first - 2, "press left"));
+    }
+    const bool want = below_on_the_way_out && x > cx && y > cy;  // the lower arc's right half: on the way out
+    if (want != shift) l.push_back(at(first + i, want ? "key-down LEFT_SHIFT" : "key-up LEFT_SHIFT"));
+    shift = want;
+    l.push_back(at(first + i, "move " + std::to_string(x) + " " + std::to_string(y)));
+  }
+  const int end = first + n;
+  l.push_back(at(end, "shot " + (dir / "stroke.png").string()));
+  l.push_back(at(end + 1, "release left"));
+  if (shift) l.push_back(at(end + 2, "key-up LEFT_SHIFT"));
+  l.push_back(at(end + 4, "dump " + (dir / "sketched.json").string()));
+  l.push_back(at(end + 5, "shot " + (dir / "sketched.png").string()));
+  // Touch: hover the loop's top, press, play, lift by 200 px. The view has grown to take the
+  // ribbon in (its ball encloses both): the loop's top is drawn at y = 270 now.
+  const int top_y = 270;
+  l.push_back(at(end + 8, "key T"));
+  l.push_back(at(end + 10, "move 640 " + std::to_string(top_y)));
+  l.push_back(at(end + 14, "move 641 " + std::to_string(top_y)));
+  l.push_back(at(end + 16, "dump " + (dir / "before.json").string()));
+  l.push_back(at(end + 17, "press left"));
+  l.push_back(at(end + 18, "key SPACE"));
+  for (int i = 1; i <= 100; ++i) l.push_back(at(end + 18 + i, "move 641 " + std::to_string(top_y - 2 * i)));
+  l.push_back(at(end + 180, "dump " + (dir / "lifted.json").string()));
+  l.push_back(at(end + 181, "shot " + (dir / "lifted.png").string()));
+  l.push_back(at(end + 183, "release left"));
+  l.push_back(at(end + 185, "quit"));
+  run_window((dir / "sphere.json").string(), l, dir);
+  return checked_dump(dir / "sketched.json");
+}
+
+double sphere_centroid_y(const nlohmann::json& d, int n) {
+  double y = 0;
+  for (int v = 0; v < n; ++v) y += vertex(d, v).y();
+  return y / n;
+}
+
+TEST(GuiSmoke, ARibbonLoopSketchedAboveThenBelowLiftsTheSphereAndAboveTwiceDoesNot) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const int sphere = 114;  // vertices of the n = 16 sphere: the World's first body
+  for (bool linked : {true, false}) {
+    SCOPED_TRACE(linked ? "above then below" : "above twice");
+    const auto dir = std::filesystem::temp_directory_path() / (linked ? "s4d_gui_lift_linked" : "s4d_gui_lift_apart");
+    const auto sketched = lift_a_sketched_ribbon(linked, dir);
+    const auto lifted = checked_dump(dir / "lifted.json");
+    ASSERT_EQ(sketched["objects"].get<int>(), 2) << sketched["status"];
+    EXPECT_EQ(sketched["ribbon_passages"],
+              linked ? nlohmann::json::array({"above", "below"}) : nlohmann::json::array({"above", "above"}));
+    EXPECT_NE(sketched["status"].get<std::string>().find("a loop"), std::string::npos) << "the stroke closed: " << sketched["status"];
+    EXPECT_FALSE(sketched["playing"].get<bool>()) << "still paused while sketching";
+    const int held = lifted["held_vertex"].get<int>();
+    ASSERT_GE(held, sphere) << "the press took the ribbon";
+    const double hand_rise = vertex(lifted, held).y() - vertex(sketched, held).y();
+    const double sphere_rise = sphere_centroid_y(lifted, sphere) - sphere_centroid_y(sketched, sphere);
+    EXPECT_GT(hand_rise, 0.4) << "the ribbon went up with the hand";
+    // Caught, the sphere sinks into the loop by at most about the loop's size (0.3) and rises with it.
+    if (linked) EXPECT_GT(sphere_rise, hand_rise - 0.6) << "the sphere came up with it";
+    else EXPECT_LT(sphere_rise, -1.0) << "the sphere fell away";
+  }
+}
+
+// The simulated arm explores through its own button under Explore (the device's button does what
+// the tool does): pressed on the torus's far sheet, moved across the lower curve, it passes below.
+TEST(GuiSmoke, TheSimulatedArmsButtonExploresUnderExplore) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_explore_sim";
+  std::vector<std::string> l{at(3, "key E"), at(10, "move 620 640"), at(20, "move 621 640"), at(40, "press left")};
+  for (int i = 1; i <= 40; ++i) l.push_back(at(40 + 2 * i, "move " + std::to_string(621 + 4 * i) + " 640"));
+  l.push_back(at(130, "dump " + (dir / "state.json").string()));
+  l.push_back(at(131, "release left"));
+  l.push_back(at(140, "dump " + (dir / "after.json").string()));
+  l.push_back(at(141, "quit"));
+  run_window(std::string(S4D_SOURCE_DIR) + "/scenes/clifford-torus.json", l, dir, "sim");
+  const auto d = checked_dump(dir / "state.json");
+  const auto after = checked_dump(dir / "after.json");
+  EXPECT_EQ(d["device"].get<std::string>(), "sim");
+  EXPECT_EQ(d["tool"].get<std::string>(), "Explore");
+  EXPECT_TRUE(d["exploring"].get<bool>()) << "the arm's button put the probe out";
+  EXPECT_EQ(d["held_vertex"].get<int>(), -1) << "and grabbed nothing";
+  EXPECT_EQ(d["explore_passes"], nlohmann::json::array({"below"})) << d["status"];
+  EXPECT_LT(d["probe_w"].get<double>(), -0.3) << "still on the far sheet";
+  EXPECT_FALSE(after["exploring"].get<bool>()) << "the button up takes it in";
+  EXPECT_LE(d["max_force_output"].get<double>(), 3.3 + 1e-9);
+}
+
+// Fig. 12 by hand: in clifford-torus-pinch (its curves and pinch points shown), pressing beside a
+// pinch point and pushing towards its partner moves the pinch points with the surface.
+TEST(GuiSmoke, PushingByHandMovesThePinchPointsOfTheTorus) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_pinch";
+  const std::string scenario = std::string(S4D_SOURCE_DIR) + "/scenarios/clifford-torus-pinch.json";
+  // Zoomed out a little, so that no panel covers the curves' ends.
+  const std::vector<std::string> zoom{at(3, "move 640 400"), at(5, "move 641 400"), at(7, "scroll -3")};
+  std::vector<std::string> first = zoom;
+  first.push_back(at(12, "dump " + (dir / "start.json").string()));
+  first.push_back(at(13, "shot " + (dir / "start.png").string()));
+  first.push_back(at(14, "quit"));
+  run_window(scenario, first, dir);
+  const auto start = checked_dump(dir / "start.json");
+  ASSERT_EQ(start["pinch_points"].size(), 4u) << "the scenario shows its curves: two arcs, four pinch points";
+  // The pinch point nearest the middle of the screen, and its partner: the nearest other one.
+  auto pixel = [&](std::size_t i) {
+    const auto& p = start["pinch_points"][i]["pixel"];
+    return Vec2(p[0].get<double>(), p[1].get<double>());
+  };
+  const Vec2 middle(640, 400);
+  std::size_t a = 0;
+  for (std::size_t i = 1; i < 4; ++i)
+    if ((pixel(i) - middle).norm() < (pixel(a) - middle).norm()) a = i;
+  std::size_t b = a == 0 ? 1 : 0;
+  for (std::size_t i = 0; i < 4; ++i)
+    if (i != a && (pixel(i) - pixel(a)).norm() < (pixel(b) - pixel(a)).norm()) b = i;
+  // Pressed just beside the curve's end (at the end itself the ray grazes the fold), pushed along it.
+  const Vec2 from = pixel(a) + Vec2(0, -12), step = 0.6 / 40 * (pixel(b) - pixel(a));
+  auto move = [](const Vec2& p) { return "move " + std::to_string(std::lround(p.x())) + " " + std::to_string(std::lround(p.y())); };
+  std::vector<std::string> l = zoom;
+  l.push_back(at(12, "key SPACE"));
+  l.push_back(at(14, move(from)));
+  l.push_back(at(18, move(from + Vec2(0, 1))));
+  l.push_back(at(20, "press left"));
+  for (int i = 1; i <= 40; ++i) l.push_back(at(20 + 2 * i, move(from + i * step)));
+  l.push_back(at(150, "dump " + (dir / "pushed.json").string()));
+  l.push_back(at(151, "shot " + (dir / "pushed.png").string()));
+  l.push_back(at(152, "release left"));
+  l.push_back(at(155, "quit"));
+  run_window(scenario, l, dir / "push");
+  const auto pushed = checked_dump(dir / "pushed.json");
+  ASSERT_GE(pushed["held_vertex"].get<int>(), 0);
+  auto at3 = [](const nlohmann::json& p) { return Vec3(p["at"][0], p["at"][1], p["at"][2]); };
+  // Each pinch point's displacement: to the nearest pinch point after the push.
+  double moved = 0;
+  for (const auto& p : start["pinch_points"]) {
+    double nearest = 1e9;
+    for (const auto& q : pushed["pinch_points"]) nearest = std::min(nearest, (at3(q) - at3(p)).norm());
+    moved = std::max(moved, nearest);
+  }
+  EXPECT_GT(moved, 0.1) << "a pinch point moved under the hand";
+  EXPECT_NE(pushed["curve_length"].get<double>(), start["curve_length"].get<double>()) << "the curves follow";
+  EXPECT_EQ(pushed["pinch_points"].size() % 2, 0u) << "a closed surface's shadow ends its curves in pairs";
+  EXPECT_EQ(pushed["true_intersections"].get<int>(), 0) << "and in R^4 the torus never meets itself";
 }
 
 }  // namespace
