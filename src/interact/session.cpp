@@ -137,8 +137,8 @@ Scene Session::reset_scene() const {
 }
 
 void Session::objects_changed() {
-  // The state of each body now, by name: velocities and pins from the last snapshot (its
-  // positions are the scene's shapes already).
+  // The state of each body now, by name: velocities and pins from the last snapshot, or from the
+  // state offered and not landed yet (its positions are the scene's shapes already).
   struct Kept {
     int count = 0;
     std::vector<double> velocities;  // count × dimension
@@ -146,22 +146,35 @@ void Session::objects_changed() {
   };
   std::map<std::string, Kept> kept;
   bool playing = options_.start_playing;
+  double time = -1;
   const int old_dim = dim_;
   if (simulating() && snapshot_ && snapshot_->point_dimension == dim_) {
+    const bool pending = state_pending();
     const HapticSnapshot& snap = *snapshot_;
-    playing = snap.status.playing;
+    const std::vector<double>& velocities = pending ? offered_.velocities : snap.velocities;
+    std::vector<std::uint8_t> pins(snap.flags.size(), 0);
+    if (pending) {
+      for (int v : offered_.pinned)
+        if (v >= 0 && static_cast<std::size_t>(v) < pins.size()) pins[static_cast<std::size_t>(v)] = 1;
+    } else {
+      for (std::size_t v = 0; v < pins.size(); ++v) pins[v] = snap.flags[v] & 1;
+    }
+    playing = pending ? offered_.play : snap.status.playing;
+    time = pending ? offered_.time : snap.status.sim_time;
     for (std::size_t o = 0; o < body_names_.size(); ++o) {
       if (first_[o] < 0) continue;
       Kept k;
       k.count = count_[o];
       const auto at = static_cast<std::size_t>(first_[o]) * static_cast<std::size_t>(dim_);
       const auto n = static_cast<std::size_t>(count_[o]) * static_cast<std::size_t>(dim_);
-      if (at + n <= snap.velocities.size())
-        k.velocities.assign(snap.velocities.begin() + static_cast<std::ptrdiff_t>(at),
-                            snap.velocities.begin() + static_cast<std::ptrdiff_t>(at + n));
+      if (at + n <= velocities.size())
+        k.velocities.assign(velocities.begin() + static_cast<std::ptrdiff_t>(at),
+                            velocities.begin() + static_cast<std::ptrdiff_t>(at + n));
+      else
+        k.velocities.assign(n, 0.0);
       for (int i = 0; i < count_[o]; ++i) {
         const auto v = static_cast<std::size_t>(first_[o] + i);
-        if (v < snap.flags.size() && (snap.flags[v] & 1)) k.pinned.push_back(i);
+        if (v < pins.size() && pins[v]) k.pinned.push_back(i);
       }
       kept.emplace(body_names_[o], std::move(k));
     }
@@ -176,6 +189,7 @@ void Session::objects_changed() {
   if (!handover_ || dim_ != old_dim) return;
   auto state = std::make_unique<WorldState>();
   state->play = playing;
+  state->time = time;  // the clock goes on
   for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
     if (first_[o] < 0) continue;
     const SceneObject& obj = doc_.scene.objects[o];
@@ -196,7 +210,7 @@ void Session::objects_changed() {
       state->velocities.resize(state->velocities.size() + static_cast<std::size_t>(count_[o] * dim_), 0.0);
     }
   }
-  handover_->offer_state(std::move(state));
+  offer_state(std::move(state));
 }
 
 void Session::add_object(SceneObject obj, const std::string& label) {
@@ -285,6 +299,7 @@ void Session::start(bool start_playing) {
   rate_wall_ = std::chrono::steady_clock::now();
   rate_sim_time_ = 0;  // the new World starts at t = 0
   rate_steps_ = 0;
+  rate_revision_ = 0;
   last_submit_ = rate_wall_;
 }
 
@@ -327,11 +342,13 @@ void Session::refresh() {
     });
   }
   const auto now = std::chrono::steady_clock::now();
-  if (snap.status.sim_steps < rate_steps_ || snap.status.sim_time < rate_sim_time_) {
-    // The simulation went back (a reset): measure afresh from here, never across the jump.
+  if (snap.status.sim_steps < rate_steps_ || snap.status.sim_time < rate_sim_time_ ||
+      snap.status.state_revision != rate_revision_) {
+    // A reset, or a state put in (an undo, a body added): measure afresh, never across the jump.
     rate_wall_ = now;
     rate_steps_ = snap.status.sim_steps;
     rate_sim_time_ = snap.status.sim_time;
+    rate_revision_ = snap.status.state_revision;
   }
   const double wall = std::chrono::duration<double>(now - rate_wall_).count();
   if (wall >= 1.0) {

@@ -183,6 +183,7 @@ class Session {
   std::chrono::steady_clock::time_point rate_wall_;
   double rate_sim_time_ = 0;
   std::int64_t rate_steps_ = 0;
+  std::uint64_t rate_revision_ = 0;  // the state revision the rates were measured in
   std::chrono::steady_clock::time_point last_submit_;
   DeviceMapping mapping_;
   History history_;
