@@ -221,10 +221,13 @@ void save_shot(const Image& image, const std::string& path, GuiModel& model) {
 // The state a scripted test reads back: the simulation's status, the monitor's checks and every
 // vertex where it is now (world coordinates), and where the view draws the shadow's pinch points.
 void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                const Vec2& window) {
+                const Vec2& window, int window_frame) {
   using Json = nlohmann::ordered_json;
   Json j;
   Session& s = model.session;
+  // The frame and the wall clock (s): two dumps give the frame rate over the frames between them.
+  j["window_frame"] = window_frame;
+  j["wall_time"] = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   j["simulating"] = s.simulating();
   j["state_pending"] = s.state_pending();
   j["physics_error"] = s.physics_error();
@@ -574,7 +577,7 @@ int run_gui_app(const GuiOptions& options) {
       shots.clear();
       if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
       model.knot_panel_name = knot_panels.shown_name();
-      for (const std::string& path : dumps) dump_state(model, knot_panels, path, camera, win);
+      for (const std::string& path : dumps) dump_state(model, knot_panels, path, camera, win, frame);
       dumps.clear();
       glfwSwapBuffers(window);
       if (last) break;
