@@ -12,8 +12,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <thread>
 #include <utility>
 #include <nlohmann/json.hpp>
 
@@ -394,7 +396,14 @@ int run_gui_app(const GuiOptions& options) {
     }
   }
   glfwSetErrorCallback(glfw_error);
-  if (!glfwInit()) {
+  // A busy X server can refuse a connection for a moment (seen once in 30 window runs under one
+  // Xvfb, the next run connecting fine): two more tries half a second apart before giving up.
+  bool initialised = glfwInit();
+  for (int retry = 0; !initialised && retry < 2 && std::getenv("DISPLAY"); ++retry) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    initialised = glfwInit();
+  }
+  if (!initialised) {
     std::cerr << "shadow4d: cannot open a window (glfwInit failed); try `shadow4d demo`\n";
     return 1;
   }
