@@ -47,9 +47,49 @@ CollisionSolver<D, K>::CollisionSolver(const Model<D>& model)
     : prox_(std::vector<Cell<K>>(cells_of<D, K>(model).begin(), cells_of<D, K>(model).end())) {
   hit_.assign(model.nv, 0);
   w_.assign(model.nv, 0.0);
+  kick_.assign(model.nv, 0.0);
   prox_.set_skin(kProximitySkin);
   contacts_.reserve(4 * cells_of<D, K>(model).size() + 16);
   pairs_.reserve(4 * cells_of<D, K>(model).size() + 16);
+}
+
+template <int D, int K>
+void CollisionSolver<D, K>::gather_contacts(const Model<D>& model, std::span<const Vec<D>> x0, double reach) {
+  const auto& cells = cells_of<D, K>(model);
+  contacts_.clear();
+  auto add = [&](int a, int b, const std::array<double, 3>& wa, const std::array<double, 3>& wb, const Vec<D>& n,
+                 double d) {
+    // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs, and so are
+    // segments a few edges apart along their chain; the fail-safe still guards them.
+    if constexpr (K == 2)
+      if (model.chain_near(a, b)) return;
+    Contact c;
+    c.a = a;
+    c.b = b;
+    c.wa = wa;
+    c.wb = wb;
+    c.n = n;
+    c.d = d;
+    for (int q = 0; q < K; ++q) c.wsum += wa[q] * wa[q] * w_[cells[a][q]] + wb[q] * wb[q] * w_[cells[b][q]];
+    contacts_.push_back(c);
+  };
+  if (model.params.persistent_contacts) {
+    cache_.update(prox_, cells, x0, reach);
+    // One contact per pair of closest features: on two sheets lying on each other a vertex above
+    // a vertex is the closest pair of up to 36 triangle pairs, each the same constraint.
+    features_.reset(cache_.entries().size());
+    for (const typename ContactCache<D, K>::Entry& e : cache_.entries())
+      if (ContactCache<D, K>::lower_bound(e) <= reach && e.d <= reach && e.d > 0 && e.n != Vec<D>::Zero() &&
+          features_.insert(e.key_a, e.key_b))
+        add(e.a, e.b, e.wa, e.wb, e.n, e.d);
+    return;
+  }
+  prox_.pairs_within(x0, reach, pairs_, RingPairs::kExclude);
+  for (const ProximityPair<D>& pp : pairs_) {
+    const ClosestPoints<D>& cp = pp.closest;
+    if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them
+    add(pp.a, pp.b, cp.wa, cp.wb, (cp.p - cp.q) / cp.distance, cp.distance);
+  }
 }
 
 template <int D, int K>
@@ -59,51 +99,51 @@ void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec
                                    CollisionStats& stats) {
   const double delta = model.contact_thickness;
   const double reach = kGatherFactor * delta;
-  const auto& tris = cells_of<D, K>(model);
-  contacts_.clear();
-  // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs, and so are
-  // segments a few edges apart along their chain; the fail-safe still guards them.
-  prox_.pairs_within(x0, reach, pairs_, RingPairs::kExclude);
-  for (const ProximityPair<D>& pp : pairs_) {
-    const ClosestPoints<D>& cp = pp.closest;
-    if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them
-    if constexpr (K == 2)
-      if (model.chain_near(pp.a, pp.b)) continue;
-    Contact c;
-    c.a = pp.a;
-    c.b = pp.b;
-    c.wa = cp.wa;
-    c.wb = cp.wb;
-    c.n = (cp.p - cp.q) / cp.distance;
-    c.d = cp.distance;
-    contacts_.push_back(c);
-  }
-  if (contacts_.empty()) return;
+  const auto& cells = cells_of<D, K>(model);
   for (int k = 0; k < model.nv; ++k) w_[k] = pinned[k] ? 0.0 : model.inv_mass[k];
+  gather_contacts(model, x0, reach);
+  if (contacts_.empty()) return;
   const double mu = model.params.friction;
   int acted = 0;
+  // Gauss-Seidel sweeps. A contact's relative normal velocity changes by at most the weighted sum
+  // of its vertices' velocity changes since it was last looked at (|Δv| accumulated per vertex in
+  // kick_), so one that had more slack than that cannot need an impulse and is skipped: after the
+  // first sweep only the contacts the impulses really reach are visited.
+  std::fill(kick_.begin(), kick_.end(), 0.0);
+  const auto kicks = [&](const Contact& c, const auto& ta, const auto& tb) {
+    double k = 0;
+    for (int q = 0; q < K; ++q) k += c.wa[q] * kick_[ta[q]] + c.wb[q] * kick_[tb[q]];
+    return k;
+  };
   for (int sweep = 0; sweep < model.params.collision_iterations; ++sweep) {
     bool any = false;
-    for (const Contact& c : contacts_) {
-      const auto& ta = tris[c.a];
-      const auto& tb = tris[c.b];
+    // A contact's velocity changed by at most twice the largest kick (its weights sum to one a
+    // side): those with more slack are passed over without reading their vertices.
+    const double kick_max = sweep > 0 ? 2 * *std::max_element(kick_.begin(), kick_.end()) : 0.0;
+    for (Contact& c : contacts_) {
+      if (sweep > 0 && c.slack > kick_max) continue;
+      const auto& ta = cells[c.a];
+      const auto& tb = cells[c.b];
+      if (sweep > 0 && !(kicks(c, ta, tb) - c.kicks >= c.slack)) continue;
+      if (!(c.wsum > 0)) continue;
       Vec<D> u = Vec<D>::Zero();
-      double wsum = 0;
-      for (int q = 0; q < K; ++q) {
-        u += c.wa[q] * v[ta[q]] - c.wb[q] * v[tb[q]];
-        wsum += c.wa[q] * c.wa[q] * w_[ta[q]] + c.wb[q] * c.wb[q] * w_[tb[q]];
-      }
-      if (!(wsum > 0)) continue;
+      for (int q = 0; q < K; ++q) u += c.wa[q] * v[ta[q]] - c.wb[q] * v[tb[q]];
       const double vn = u.dot(c.n);
       // Approach is allowed down to δ; inside δ the pair may only stay or separate.
       const double vn_target = c.d >= delta ? (delta - c.d) / dt : 0.0;
-      if (!(vn < vn_target)) continue;
+      if (!(vn < vn_target)) {
+        // The kicks so far are a part of the bound worth reading only where the slack is small;
+        // 0 (kicks only grow) is the safe side and spares the first sweep those loads.
+        c.slack = vn - vn_target;
+        c.kicks = sweep > 0 ? kicks(c, ta, tb) : 0.0;
+        continue;
+      }
       const double dvn = vn_target - vn;
-      Vec<D> dir = c.n * (dvn / wsum);
+      Vec<D> dir = c.n * (dvn / c.wsum);
       // Coulomb friction: the tangential slip shrinks by at most μ times the normal change.
       const Vec<D> ut = u - vn * c.n;
       const double slip = ut.norm();
-      if (mu > 0 && slip > 0) dir -= ut * (std::min(slip, mu * dvn) / slip / wsum);
+      if (mu > 0 && slip > 0) dir -= ut * (std::min(slip, mu * dvn) / slip / c.wsum);
       for (int q = 0; q < K; ++q) {
         const Vec<D> da = c.wa[q] * w_[ta[q]] * dir;
         const Vec<D> db = c.wb[q] * w_[tb[q]] * dir;
@@ -111,7 +151,11 @@ void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec
         x1[ta[q]] += dt * da;
         v[tb[q]] -= db;
         x1[tb[q]] -= dt * db;
+        kick_[ta[q]] += da.norm();
+        kick_[tb[q]] += db.norm();
       }
+      c.slack = 0;
+      c.kicks = kicks(c, ta, tb);
       any = true;
       if (sweep == 0) ++acted;
     }
@@ -120,14 +164,10 @@ void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec
   // The paper's response: equal and opposite displacement along the closest-point line, back
   // towards δ. Positions only, so it cannot feed kinetic energy.
   for (const Contact& c : contacts_) {
-    if (c.d >= delta) continue;
-    const auto& ta = tris[c.a];
-    const auto& tb = tris[c.b];
-    double wsum = 0;
-    for (int q = 0; q < K; ++q)
-      wsum += c.wa[q] * c.wa[q] * w_[ta[q]] + c.wb[q] * c.wb[q] * w_[tb[q]];
-    if (!(wsum > 0)) continue;
-    const Vec<D> dir = c.n * (kPushFraction * (delta - c.d) / wsum);
+    if (c.d >= delta || !(c.wsum > 0)) continue;
+    const auto& ta = cells[c.a];
+    const auto& tb = cells[c.b];
+    const Vec<D> dir = c.n * (kPushFraction * (delta - c.d) / c.wsum);
     for (int q = 0; q < K; ++q) {
       x1[ta[q]] += c.wa[q] * w_[ta[q]] * dir;
       x1[tb[q]] -= c.wb[q] * w_[tb[q]] * dir;

@@ -63,6 +63,9 @@ struct PhysicsParams {
   Integrator integrator = Integrator::kSymplecticEuler;
   bool collisions = true;             // self- and mutual collision avoidance
   int collision_iterations = 4;       // Gauss-Seidel sweeps of the contact impulses
+  // Contact pairs kept from step to step and carried along their normals (physics/contact_cache);
+  // false: every pair found and solved afresh each step (the path before, kept to compare with).
+  bool persistent_contacts = true;
   int ccd_passes = 6;                 // fail-safe passes before the global freeze
   double max_speed = 200;             // m/s: a faster vertex means the step exploded (rolled back)
   double max_step_motion = 0;         // m per step, 0 = δ (the paper clamps motion per frame to δ)

@@ -51,6 +51,12 @@ class World {
   const Model<D>& model() const { return model_; }
   // Broad-phase runs of the collision query so far (it reuses its pair list while motion is small).
   long long broad_phase_runs() const { return surfaces_.broad_phase_runs() + curves_.broad_phase_runs(); }
+  // The persistent contacts' work so far, surfaces' and curves' (physics/contact_cache.hpp).
+  ContactCacheStats contact_stats() const {
+    ContactCacheStats s = surfaces_.contact_stats();
+    return s += curves_.contact_stats();
+  }
+  long long exact_distances() const { return surfaces_.exact_distances() + curves_.exact_distances(); }
   const Data<D>& data() const { return data_; }
   int vertex_count() const { return model_.nv; }
   std::span<const Vec<D>> positions() const { return data_.x; }
