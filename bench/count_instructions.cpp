@@ -4,7 +4,7 @@
 // swing by ±25 %; instruction counts repeat exactly, so they are what a change is judged by
 // (scripts/count-instructions.sh runs it).
 //
-// Usage: count_instructions physics|folded|pairs|impact [--n 64] [--warmup W] [--steps S]
+// Usage: count_instructions physics|folded|pairs|impact [--n 64] [--warmup W] [--steps S] [--fresh 1]
 // Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
 // their mean wall time as well.
 #include <chrono>
@@ -32,6 +32,7 @@ struct Options {
   int n = 64;
   int warmup = -1;  // -1: the figure's own default
   int steps = 100;
+  bool fresh = false;  // folded: every contact found and solved afresh (persistent_contacts off)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -91,10 +92,16 @@ double physics(const Options& o) {
 // physics_bench's folded cloth resting on itself: steps 201–300 at the defaults.
 double folded(const Options& o) {
   std::unique_ptr<World<4>> w = folded_cloth_on_table<4>(o.n);
+  Model<4> m = w->model();
+  m.params.persistent_contacts = !o.fresh;
+  w->set_model(std::move(m));
   const double ms = measure(o, 200, [&](bool timed) { return run(timed, [&] { w->step(); }); });
   std::printf("folded: state hash %016llx after %lld steps, %d contacts in the last\n",
               static_cast<unsigned long long>(state_hash(w->positions())),
               static_cast<long long>(w->data().steps), w->data().last_contacts);
+  const ContactCacheStats cs = w->contact_stats();
+  std::printf("folded: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances\n",
+              cs.searches, cs.solves, cs.carried, w->exact_distances());
   return ms;
 }
 
@@ -127,7 +134,7 @@ double impact(const Options& o) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: count_instructions physics|folded|pairs|impact [--n N] [--warmup W] [--steps S]\n");
+               "usage: count_instructions physics|folded|pairs|impact [--n N] [--warmup W] [--steps S] [--fresh 1]\n");
   return 2;
 }
 
@@ -145,6 +152,7 @@ int main(int argc, char** argv) {
     if (flag == "--n" && value >= 8) o.n = value;
     else if (flag == "--warmup" && value >= 0) o.warmup = value;
     else if (flag == "--steps" && value >= 1) o.steps = value;
+    else if (flag == "--fresh") o.fresh = value != 0;
     else return usage();
   }
   if ((argc - 2) % 2 != 0) return usage();

@@ -7,6 +7,8 @@
 //   case 0: the spun trefoil of scenarios/spun-trefoil-tighten.json (746 vertices)
 //   case 1: scenes/cloth.json, the window's 32² cloth, hung by one edge
 //   case 2: the 64² cloth folded onto itself on a held table (bench/cloth_scene.hpp), async only
+//   case 3: that cloth's upper layer dragged 3 cm across the lower one and back over 2 s by the
+//           replay device (a recorded hand, the `--device replay:FILE` path), async (issue 28)
 // Targets: loop p99.9 ≤ 1.2 ms and physics ≥ real time for cases 0 and 1; case 2 keeps the loop at
 // 1 kHz while its physics falls behind, and nothing passes through. S4D_LIVE_BENCH_SECONDS sets a
 // run's length (default 4 s).
@@ -18,14 +20,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <thread>
 
 #include "haptics/haptic_loop.hpp"
+#include "haptics/replay_device.hpp"
 #include "haptics/simulated_arm.hpp"
+#include "haptics/trajectory_file.hpp"
 #include "interact/haptic_scenes.hpp"
 #include "interact/live_simulation.hpp"
 #include "io/scene.hpp"
-#include "proximity/mesh_proximity.hpp"
+#include "shape/mesh_checks.hpp"
 #include "scenario/scenario.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -36,7 +41,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double bench_seconds() {
+// Case 3's run: 0.3 s at rest, the 2 s drag, 0.5 s held.
+constexpr double kReplayRunSeconds = 2.8;
+
+double bench_seconds(int which) {
+  if (which == 3) return kReplayRunSeconds;
   const char* env = std::getenv("S4D_LIVE_BENCH_SECONDS");
   const double s = env ? std::atof(env) : 4.0;
   return s > 0.5 ? s : 4.0;
@@ -74,9 +83,35 @@ Case make_case(int which) {
     return Case{"cloth 32x32", load_scene(root / "scenes" / "cloth.json"), edge, 16 * n + 16, Vec3(0, 0, 0.025)};
   }
   const int n = 64;
-  // The upper layer's free edge, in its middle, slid 2 cm sideways over the lower layer and back.
+  // The upper layer's free edge, in its middle, slid sideways over the lower layer and back.
+  if (which == 3)
+    return Case{"folded cloth 64x64, replay", bench::folded_cloth_scene<4>(n), bench::folded_cloth_table(n),
+                (n - 1) * n + n / 2, Vec3(0, 0, 0.03)};
   return Case{"folded cloth 64x64", bench::folded_cloth_scene<4>(n), bench::folded_cloth_table(n), (n - 1) * n + n / 2,
               Vec3(0, 0, 0.02)};
+}
+
+// The hand's path as a recorded trajectory at 1 kHz, button 1 held throughout: what a replay of a
+// session's drag plays.
+Trajectory recorded_hand(const std::function<Vec3(double)>& hand, double seconds, const DeviceCapabilities& caps) {
+  Trajectory t;
+  t.header.device = "sim";
+  t.header.scene = "live-simulation";
+  t.header.caps = caps;
+  const int ticks = static_cast<int>(seconds * t.header.rate);
+  for (int k = 0; k < ticks; ++k) {
+    const double time = k / t.header.rate;
+    DeviceState st;
+    st.position = hand(time);
+    st.velocity = (hand(time + 1 / t.header.rate) - st.position) * t.header.rate;
+    st.target = st.position;
+    st.buttons = 1;
+    TickRecord r;
+    r.tick = static_cast<std::uint64_t>(k);
+    r.set_state(st);
+    t.ticks.push_back(r);
+  }
+  return t;
 }
 
 // Smooth ramp 0 → 1 over [a, b].
@@ -85,31 +120,28 @@ double ramp(double t, double a, double b) {
   return u * u * (3 - 2 * u);
 }
 
+// Pairs of triangles that touch or cross (every body's together), by the checker that shares no
+// code with the engine (shape/mesh_checks.hpp).
 int true_intersections(const Scene& scene, const std::vector<double>& points) {
   std::vector<int> first, count;
   body_vertex_ranges(scene, first, count);
-  std::vector<Cell<3>> cells;
+  Surface<4> all;
+  all.vertices.resize(points.size() / 4);
+  for (std::size_t i = 0; i < all.vertices.size(); ++i)
+    all.vertices[i] = Vec4(points[4 * i], points[4 * i + 1], points[4 * i + 2], points[4 * i + 3]);
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const auto* s = std::get_if<Surface<4>>(&scene.objects[o].shape);
     if (!s) continue;
-    for (const Triangle& t : s->triangles) cells.push_back({t[0] + first[o], t[1] + first[o], t[2] + first[o]});
+    for (const Triangle& t : s->triangles) all.triangles.push_back({t[0] + first[o], t[1] + first[o], t[2] + first[o]});
   }
-  std::vector<Vec4> x(points.size() / 4);
-  Vec4 lo = Vec4::Constant(1e300), hi = -lo;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    x[i] = Vec4(points[4 * i], points[4 * i + 1], points[4 * i + 2], points[4 * i + 3]);
-    lo = lo.cwiseMin(x[i]);
-    hi = hi.cwiseMax(x[i]);
-  }
-  // The tolerance the window's monitor uses: floating point never gives exactly 0 for a crossing.
-  return static_cast<int>(intersecting_pairs<4, 3>(std::span<const Vec4>(x), cells, 1e-9 * (hi - lo).norm()).size());
+  return independent::self_intersections<4>(all).intersecting_pairs;
 }
 
 // range(0): the case; range(1): 1 = async physics (the window's mode), 0 = inline.
 void BM_LiveHapticDrag(benchmark::State& state) {
   const int which = static_cast<int>(state.range(0));
   const bool async = state.range(1) != 0;
-  const double seconds = bench_seconds();
+  const double seconds = bench_seconds(which);
   PeriodSummary p, work;
   SceneStatus status;
   bool realtime = false;
@@ -131,10 +163,18 @@ void BM_LiveHapticDrag(benchmark::State& state) {
     // The hand rests 0.3 s, pulls out over 40 % of the rest of the run, comes back over as long, holds.
     const double out_end = 0.3 + 0.4 * (seconds - 0.3), back_end = 0.3 + 0.8 * (seconds - 0.3);
     const Vec3 pull = c.pull;
-    arm->set_position(start);
-    arm->set_hand_script(
-        [=](double t) -> Vec3 { return start + (ramp(t, 0.3, out_end) - ramp(t, out_end, back_end)) * pull; });
-    HapticLoop loop(std::move(arm), std::move(scene));
+    const std::function<Vec3(double)> hand = [=](double t) -> Vec3 {
+      return start + (ramp(t, 0.3, out_end) - ramp(t, out_end, back_end)) * pull;
+    };
+    std::unique_ptr<Device> device;
+    if (which == 3) {
+      device = std::make_unique<ReplayDevice>(recorded_hand(hand, seconds, arm->capabilities()), false);
+    } else {
+      arm->set_position(start);
+      arm->set_hand_script(hand);
+      device = std::move(arm);
+    }
+    HapticLoop loop(std::move(device), std::move(scene));
     loop.set_pointer(start, 1u);  // button 1 held from the first tick: the arm starts on the vertex
     std::vector<std::vector<double>> states;
     const auto t0 = std::chrono::steady_clock::now();
@@ -189,6 +229,7 @@ BENCHMARK(BM_LiveHapticDrag)
     ->Args({0, 1})
     ->Args({1, 1})
     ->Args({2, 1})
+    ->Args({3, 1})
     ->Args({0, 0})
     ->Args({1, 0})
     ->Iterations(1)

@@ -36,6 +36,14 @@ int pass_throughs(std::span<const Vec<D>> x, const std::vector<Triangle>& tris) 
   return static_cast<int>(intersecting_pairs<D, 3>(x, cells, 1e-9).size());
 }
 
+// Persistent contacts on, or every contact found afresh each step (the path before issue 28).
+template <int D>
+void use_persistent_contacts(World<D>& w, bool on) {
+  Model<D> m = w.model();
+  m.params.persistent_contacts = on;
+  w.set_model(std::move(m));
+}
+
 void BM_Cloth4DCrumpledStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   auto w = crumpled_cloth<4>(n, 600);
@@ -66,13 +74,16 @@ void BM_Cloth4DCrumpledStep(benchmark::State& state) {
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(64)->Iterations(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(128)->Iterations(60)->Unit(benchmark::kMillisecond);
 
+// range(1): 1 = persistent contacts (physics/contact_cache.hpp), 0 = every pair found and solved
+// afresh each step (the path before issue 28), side by side.
 void BM_Cloth4DFoldedContactStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   auto world = folded_cloth_on_table<4>(n);
   World<4>& w = *world;
+  use_persistent_contacts(w, state.range(1) != 0);
   for (int s = 0; s < 200; ++s) w.step();  // the upper half settles onto the lower
   double contacts = 0;
-  const long long runs0 = w.broad_phase_runs();
+  const long long runs0 = w.broad_phase_runs(), exact0 = w.exact_distances();
   for (auto _ : state) {
     w.step();
     contacts += w.data().last_contacts;
@@ -80,12 +91,18 @@ void BM_Cloth4DFoldedContactStep(benchmark::State& state) {
   const double steps = static_cast<double>(state.iterations());
   state.counters["vertices"] = n * n;
   state.counters["contacts_per_step"] = contacts / steps;
+  state.counters["exact_per_step"] = static_cast<double>(w.exact_distances() - exact0) / steps;
   state.counters["rebuilds_per_step"] = static_cast<double>(w.broad_phase_runs() - runs0) / steps;
   state.counters["min_gap_over_delta"] = w.min_separation(2 * w.model().contact_thickness) /
                                          w.model().contact_thickness;
   state.counters["pass_throughs"] = pass_throughs<4>(w.positions(), w.model().triangles);
 }
-BENCHMARK(BM_Cloth4DFoldedContactStep)->Arg(64)->Iterations(300)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Cloth4DFoldedContactStep)
+    ->ArgNames({"n", "persistent"})
+    ->Args({64, 0})
+    ->Args({64, 1})
+    ->Iterations(300)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_SpunTrefoilStep(benchmark::State& state) {
   Scene scene;
@@ -145,6 +162,7 @@ void BM_Peer3DCloth_s4d(benchmark::State& state) {
   double steps_per_s = 0;
   for (auto _ : state) {
     World<3> w = build_world<3>(flat_cloth_scene<3>(n)).world;
+    use_persistent_contacts(w, state.range(1) != 0);
     w.pin(0);
     w.pin(n - 1);
     const auto t0 = std::chrono::steady_clock::now();
@@ -158,7 +176,13 @@ void BM_Peer3DCloth_s4d(benchmark::State& state) {
   state.counters["steps_per_s"] = steps_per_s;
   state.counters["pass_throughs"] = bad;
 }
-BENCHMARK(BM_Peer3DCloth_s4d)->Arg(64)->Iterations(1)->Unit(benchmark::kSecond);
+// range(1): persistent contacts (1) or every contact found afresh (0), as in the folded step.
+BENCHMARK(BM_Peer3DCloth_s4d)
+    ->ArgNames({"n", "persistent"})
+    ->Args({64, 0})
+    ->Args({64, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 void BM_Peer3DCloth_Bullet(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
