@@ -54,7 +54,7 @@ struct Totals {
 };
 
 // A hand that wanders in the workspace, holds its button now and then, and drops out.
-Trajectory wandering_hand(double seconds, std::mt19937& rng, long long& disconnects) {
+Trajectory wandering_hand(double seconds, std::mt19937& rng) {
   Trajectory t;
   t.header.device = "soak-hand";
   t.header.caps.max_force = 3.3;
@@ -75,7 +75,6 @@ Trajectory wandering_hand(double seconds, std::mt19937& rng, long long& disconne
     if (u(rng) < 0.0005) buttons ^= 2u;
     if (i >= gone_until && u(rng) < 0.0003) {
       gone_until = i + 50 + static_cast<std::size_t>(u(rng) * 400);  // 50-450 ms without the cable
-      ++disconnects;
     }
     TickRecord r;
     r.tick = i;
@@ -113,7 +112,7 @@ bool all_finite(const std::vector<double>& v) {
 // The counters of the loop running now, folded into the totals when it is replaced or at the end.
 struct LoopCounts {
   const HapticLoop* loop = nullptr;
-  long long steps = 0, rollbacks = 0, freezes = 0, reconnects = 0, clamped = 0, nonfinite = 0;
+  long long steps = 0, rollbacks = 0, freezes = 0, disconnects = 0, reconnects = 0, clamped = 0, nonfinite = 0;
 
   void see(const HapticLoop* now, const HapticSnapshot& snap, Totals& t) {
     if (now != loop) fold(t);
@@ -121,6 +120,7 @@ struct LoopCounts {
     steps = snap.status.sim_steps;
     rollbacks = snap.status.rollbacks;
     freezes = snap.status.global_freezes;
+    disconnects = static_cast<long long>(snap.disconnects);
     reconnects = static_cast<long long>(snap.reconnects);
     clamped = static_cast<long long>(snap.safety.clamped);
     nonfinite = static_cast<long long>(snap.safety.nonfinite);
@@ -130,6 +130,7 @@ struct LoopCounts {
     t.steps += steps;
     t.rollbacks += rollbacks;
     t.freezes += freezes;
+    t.disconnects += disconnects;
     t.reconnects += reconnects;
     t.clamped += clamped;
     t.nonfinite_requests += nonfinite;
@@ -139,7 +140,7 @@ struct LoopCounts {
 
 void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir, std::mt19937& rng, Totals& t) {
   const fs::path replay = dir / (scenario.stem().string() + ".traj");
-  write_trajectory(replay, wandering_hand(seconds + 5, rng, t.disconnects));
+  write_trajectory(replay, wandering_hand(seconds + 5, rng));
   Session s;
   SessionOptions o;
   o.device = "replay:" + replay.string();

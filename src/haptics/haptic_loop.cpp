@@ -177,6 +177,7 @@ void HapticLoop::tick(bool deadline_missed) {
   const bool was_connected = connected_;
   connected_ = device_->read(in, s) == DeviceStatus::ok;
   if (connected_ && !was_connected) ++reconnects_;  // back, by reconnect() or by itself
+  if (!connected_ && was_connected) ++disconnects_;
   if (connected_ && s.position.allFinite() && s.velocity.allFinite()) {
     state_ = s;
   } else {
@@ -248,6 +249,7 @@ void HapticLoop::publish() {
   scene_->copy_flags(s.flags);
   scene_->copy_status(s.status);
   s.reconnects = reconnects_;
+  s.disconnects = disconnects_;
   snapshots_.publish();
 }
 

@@ -67,6 +67,7 @@ struct HapticSnapshot {
   std::vector<std::uint8_t> flags;    // point_count, bit 0: pinned
   SceneStatus status;                 // the simulating scene's status
   std::uint64_t reconnects = 0;       // times the device came back after it was gone
+  std::uint64_t disconnects = 0;      // times it was lost
 };
 
 class HapticLoop {
@@ -147,6 +148,7 @@ class HapticLoop {
   bool pending_reset_ = false;  // a reset applied while stopped, reported to safety by the next tick
   std::uint64_t next_reconnect_tick_ = 0;
   std::uint64_t reconnects_ = 0;
+  std::uint64_t disconnects_ = 0;
   std::unique_ptr<TrajectoryRecorder> recorder_;
 
   SpscQueue<HapticCommand, 256> commands_;

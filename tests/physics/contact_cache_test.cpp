@@ -50,13 +50,16 @@ TEST(ContactCache, EveryPairABruteForceFindsWithinReachIsListedAndItsBoundsHold)
   std::normal_distribution<double> g(0, 1);
   std::uniform_real_distribution<double> size(0, 1);
   int within = 0, carried_checked = 0;
-  for (int step = 0; step < 100; ++step) {
+  for (int step = 0; step < 120; ++step) {
     // Mostly small motions (what the cache carries), now and then a larger one (a re-search).
     const double scale = size(rng) < 0.05 ? 0.5 * reach : 0.005 * reach;
     for (std::size_t i = 0; i < sheets.x.size(); ++i)
       sheets.x[i] += scale * Vec4(g(rng), g(rng), g(rng), g(rng)) +
                      (i < 36 ? 1.0 : -1.0) * 0.002 * reach * Vec4(0, 0, std::sin(step * 0.05), 0);
     cache.update(prox, sheets.cells, sheets.x, reach);
+    // Checked at every fourth step (the independent distances are slow in the sanitizer builds);
+    // the cache runs at every one.
+    if (step % 4 != 0) continue;
     std::vector<char> listed(sheets.cells.size() * sheets.cells.size(), 0);
     for (const auto& e : cache.entries()) {
       const double d = independent::triangle_distance<4>(sheets.tri(e.a), sheets.tri(e.b));
@@ -82,10 +85,10 @@ TEST(ContactCache, EveryPairABruteForceFindsWithinReachIsListedAndItsBoundsHold)
             << "step " << step << ": pair " << a << ", " << b << " within reach is not listed";
       }
   }
-  EXPECT_GT(within, 1000) << "the sheets were in reach of each other";
+  EXPECT_GT(within, 500) << "the sheets were in reach of each other";
   EXPECT_GT(cache.stats().carried, 0);
   EXPECT_GT(cache.stats().searches, 1);
-  EXPECT_LT(cache.stats().searches, 50) << "most steps carry the contacts, few search afresh";
+  EXPECT_LT(cache.stats().searches, 60) << "most steps carry the contacts, few search afresh";
   EXPECT_GT(carried_checked, 0);
 }
 
