@@ -78,9 +78,10 @@ void CollisionSolver<D, K>::gather_contacts(const Model<D>& model, std::span<con
     // One contact per pair of closest features: on two sheets lying on each other a vertex above
     // a vertex is the closest pair of up to 36 triangle pairs, each the same constraint.
     features_.reset(cache_.entries().size());
+    // A carried distance never falls below its lower bound, and a pair solved at 0 (no normal)
+    // stays at 0: d in (0, reach] says both that it may be in reach and that it has a direction.
     for (const typename ContactCache<D, K>::Entry& e : cache_.entries())
-      if (ContactCache<D, K>::lower_bound(e) <= reach && e.d <= reach && e.d > 0 && e.n != Vec<D>::Zero() &&
-          features_.insert(e.key_a, e.key_b))
+      if (e.d <= reach && e.d > 0 && features_.insert(e.key_a, e.key_b))
         add(e.a, e.b, e.wa, e.wb, e.n, e.d);
     return;
   }
