@@ -18,6 +18,7 @@
 #include "interact/curve_explorer_scene.hpp"
 #include "interact/surface_explorer.hpp"
 #include "knots/relax.hpp"
+#include "physics/patch.hpp"
 #include "scenario/script_driver.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -58,16 +59,18 @@ SceneCommand live_settings(const PhysicsSettings& s) {
   return c;
 }
 
-SceneCommand live_grab(int vertex, int mode, const Vec3& hand) {
+SceneCommand live_grab(int vertex, int mode, const Vec3& hand, double carry_radius) {
   SceneCommand c = live_command(LiveCode::kGrab, vertex, mode);
   for (int k = 0; k < 3; ++k) c.x[k] = hand[k];
+  c.x[3] = carry_radius;
   return c;
 }
 
-SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode) {
+SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode, double carry_radius) {
   SceneCommand c = live_command(LiveCode::kGrabNearest, 0, mode);
   for (int k = 0; k < 3; ++k) c.x[k] = point[k];
   c.x[3] = radius;
+  c.x[4] = carry_radius;
   return c;
 }
 
@@ -140,6 +143,10 @@ struct Hand {
   Vec<D> target_v = Vec<D>::Zero();     // view coordinates, per s
   Vec<D> weight = Vec<D>::Ones();       // 1 on the view axes the band pulls along
   double k = 0, b = 0, max_force = 0;
+  // Carrying: the patch of this radius (along the surface) around the vertex follows the hand
+  // kinematically, each vertex by its weight, and stays held where the hand lets go. 0: the band.
+  double carry_radius = 0;
+  std::uint64_t grab = 0;  // counts the grabs, so that a new grab of the same vertex starts a new patch
 };
 
 // The band's force on the vertex at world position x, velocity v, in world coordinates.
@@ -175,6 +182,7 @@ class Core {
     if (scenario) scenario_ = *scenario;
     status_.simulating = true;
     start_by_hand();
+    reserve_carry();
   }
 
   const World<D>& world() const { return world_.world; }
@@ -282,6 +290,7 @@ class Core {
     if (script_) script_->release(w);
     script_.reset();
     hand_ = Hand<D>{};
+    carrying_ = false;
     owed_ = 0;
     playing_ = s.play;
   }
@@ -307,6 +316,7 @@ class Core {
       if (hand_.vertex >= 0) setup_->hand_takes(w, hand_.vertex);
       setup_->apply(w, (w.data().steps + 1) * ts);
     }
+    carry(w, ts);  // last: the hand's patch wins over a hold of the set-up
     w.step();
     return true;
   }
@@ -366,6 +376,8 @@ class Core {
       }
     }
     hand_ = Hand<D>{};
+    carrying_ = false;
+    reserve_carry();
     owed_ = 0;
     script_.reset();
     relaxing_ = false;
@@ -450,6 +462,50 @@ class Core {
       w.set_external_force(static_cast<int>(i), (w.model().mass[i] / dt) * (relax_target_[i] - v[i]));
   }
 
+  // [carry] The hand carries a patch: pinned from the grab, each vertex following the hand's
+  // displacement times its weight, at most kCarrySpeed fast (a mouse may jump; the World's
+  // collision handling then sees a hand's motion, and the band shows the lag). Where the hand lets
+  // go the patch stays held: a sculptor's local deformation (paper Fig. 12), undone as one step.
+  void carry(World<D>& w, double ts) {
+    const bool wants = hand_.vertex >= 0 && hand_.vertex < w.vertex_count() && hand_.carry_radius > 0;
+    if (!wants) {
+      carrying_ = false;
+      return;
+    }
+    const auto x = w.positions();
+    if (!carrying_ || carry_grab_ != hand_.grab || carry_vertex_ != hand_.vertex) {
+      const int centre[] = {hand_.vertex};
+      grow_patch<D>(w.model(), x, centre, hand_.carry_radius, patch_, patch_scratch_);
+      carry_start_.clear();
+      for (int v : patch_.vertices) {
+        carry_start_.push_back(x[static_cast<std::size_t>(v)]);
+        w.pin(v);
+      }
+      carried_.setZero();
+      carry_grab_ = hand_.grab;
+      carry_vertex_ = hand_.vertex;
+      carrying_ = true;
+    }
+    // Where the hand wants the centre, as a displacement from its start, on the axes it moves.
+    const Vec<D> q0 = hand_.frame.transpose() * carry_start_.front();
+    const Vec<D> want = hand_.frame * (hand_.target - q0).cwiseProduct(hand_.weight);
+    Vec<D> step = want - carried_;
+    const double most = kCarrySpeed * ts, n = step.norm();
+    if (!std::isfinite(n)) return;
+    if (n > most) step *= most / n;
+    carried_ += step;
+    for (std::size_t i = 0; i < patch_.vertices.size(); ++i)
+      w.set_target(patch_.vertices[i], carry_start_[i] + patch_.weights[i] * carried_);
+  }
+  void reserve_carry() {
+    const Model<D>& m = world_.world.model();
+    const std::size_t nv = static_cast<std::size_t>(m.nv);
+    patch_scratch_.reserve(m.nv, m.adjacency.size());
+    patch_.vertices.reserve(nv);
+    patch_.weights.reserve(nv);
+    carry_start_.reserve(nv);
+  }
+
   // The scenario's set-up for doing it by hand (ByHand in scenario.hpp), in force from the start
   // so that its holds show as pins while the scenario waits, paused.
   void start_by_hand() {
@@ -479,6 +535,14 @@ class Core {
   std::optional<ScriptDriver<D>> script_;  // Play script: the scenario's scripted hand
   std::optional<ScriptDriver<D>> setup_;   // otherwise: the set-up kept while a person does it
   Hand<D> hand_;
+  static constexpr double kCarrySpeed = 2;  // scene units (m) per s: a brisk hand
+  bool carrying_ = false;
+  std::uint64_t carry_grab_ = 0;
+  int carry_vertex_ = -1;
+  Patch patch_;
+  PatchScratch patch_scratch_;
+  std::vector<Vec<D>> carry_start_;  // the patch's positions at the grab
+  Vec<D> carried_ = Vec<D>::Zero();  // world: how far the hand has carried the centre
   bool playing_ = true;
   double time_scale_ = 1;
   double owed_ = 0;  // s of simulated time the clock calls for
@@ -564,7 +628,9 @@ template <int D>
 class LiveSimulation final : public HapticScene, public LiveHandover, public SketchHost {
  public:
   LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
-      : options_(o), mapping_(o.mapping), frame4_(o.frame), button_action_(o.button) {
+      : options_(o), mapping_(o.mapping), frame4_(o.frame),
+        button_carry_(std::isfinite(o.button_carry) ? std::clamp(o.button_carry, 0.0, kMaxCarryRadius) : 0.0),
+        button_action_(o.button) {
     auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing, o.reset_to);
     nv_ = core->vertex_count();
     triangles_ = core->world().model().triangles;
@@ -622,12 +688,12 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     }
     switch (static_cast<LiveCode>(c.code)) {
       case LiveCode::kGrab:
-        if (c.i[0] >= 0 && c.i[0] < nv_ && finite_command(c)) grab(c.i[0], c.i[1]);
+        if (c.i[0] >= 0 && c.i[0] < nv_ && finite_command(c)) take(c.i[0], c.i[1], c.x[3]);
         return;
       case LiveCode::kGrabNearest:
         if (finite_command(c)) {
           const int v = nearest(Vec3(c.x[0], c.x[1], c.x[2]), c.x[3]);
-          if (v >= 0) grab(v, c.i[1]);
+          if (v >= 0) take(v, c.i[1], c.x[4]);
         }
         return;
       case LiveCode::kRelease:
@@ -663,6 +729,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
         return;
       case LiveCode::kDeviceButton:
         button_action_ = static_cast<DeviceButton>(std::clamp(c.i[1], 0, 2));
+        button_carry_ = std::isfinite(c.x[0]) ? std::clamp(c.x[0], 0.0, kMaxCarryRadius) : 0.0;
         return;
       case LiveCode::kReset:
       case LiveCode::kPlayScript:
@@ -697,7 +764,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
       const Vec3 at = mapping_.to_shadow(device.position);
       if (button_action_ == DeviceButton::kGrab) {
         const int v = nearest(at, kGrabReach / mapping_.metres_per_unit);
-        if (v >= 0) grab(v, (device.buttons & 2u) ? 1 : 0);
+        if (v >= 0) take(v, (device.buttons & 2u) ? 1 : 0, button_carry_);
         grabbed_by_button_ = held_ >= 0;
       } else if (button_action_ == DeviceButton::kExplore) {
         start_exploring(at);
@@ -776,6 +843,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     out = core_ ? core_->status() : current_->status;
     out.held_vertex = held_;
     out.grab_mode = mode_;
+    out.carry_radius = held_ >= 0 ? carry_radius_ : 0;
     const auto x = positions();
     if (held_ >= 0 && held_ < static_cast<int>(x.size())) {
       out.band_to = shadow(x[held_]);
@@ -927,7 +995,15 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     return best;
   }
 
-  // Holds vertex v from where the hand is now: the band starts slack (no jump on grabbing).
+  // A new grab of vertex v: on the band, or carrying the patch of `carry_radius` around it.
+  void take(int v, int mode, double carry_radius) {
+    carry_radius_ = std::isfinite(carry_radius) ? std::clamp(carry_radius, 0.0, kMaxCarryRadius) : 0.0;
+    ++grab_count_;
+    grab(v, mode);
+  }
+
+  // Holds vertex v from where the hand is now: the band starts slack (no jump on grabbing). Also
+  // re-anchors a held vertex (another mode, frame or mapping): a carried patch carries on.
   void grab(int v, int mode) {
     const auto x = positions();
     if (v < 0 || v >= static_cast<int>(x.size())) return;
@@ -946,6 +1022,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     h.k = params_[kBandStiffness].value;
     h.b = params_[kBandDamping].value;
     h.max_force = params_[kBandMaxForce].value;
+    h.carry_radius = carry_radius_;
+    h.grab = grab_count_;
     if constexpr (D == 4) h.frame = frame4_.matrix();
     h.target = grab_view_;
     if (mode_ == 1) {
@@ -995,6 +1073,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
 
   static constexpr double kMaxFeltStiffness = 800;  // N/m: what a desktop arm renders stably
   static constexpr double kGrabReach = 0.01;         // m: how near a device's point grabs a vertex
+  static constexpr double kMaxCarryRadius = 1e3;     // scene units: beyond any scene, a sane bound
 
   LiveOptions options_;
   std::unique_ptr<Core<D>> core_;
@@ -1007,6 +1086,9 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   int nv_ = 0;
   bool curves_ = false;  // the bodies are curves (a knot: its shadow is the view's plane)
   int held_ = -1, mode_ = 0;
+  double carry_radius_ = 0;       // of the held vertex's grab: 0 on the band
+  double button_carry_ = 0;       // what a device's button carries (the tool's radius)
+  std::uint64_t grab_count_ = 0;
   Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
   Vec<D> grab_view_ = Vec<D>::Zero();
   Vec3 grab_device_ = Vec3::Zero();

@@ -35,8 +35,11 @@ enum class LiveCode : int {
   kTogglePin,  // i0: vertex
   kClearPins,
   kGrab,         // i0: vertex, i1: mode (0 shadow, 1 along the shadow ray: w, or a knot's depth);
-                 // x0..x2: the hand's point in shadow space
-  kGrabNearest,  // x0..x2: shadow point, x3: radius (scene units); i1: mode — the device's button
+                 // x0..x2: the hand's point in shadow space; x3: carry radius (0: the rubber band;
+                 // > 0: the patch that far around the vertex, along the surface, follows the hand
+                 // kinematically and stays held where it is let go)
+  kGrabNearest,  // x0..x2: shadow point, x3: radius (scene units), x4: carry radius; i1: mode — the
+                 // device's button
   kRelease,      // a curve (edited like clay) rests where it was left
   kGrabMode,     // i1: mode, re-anchored where the hand and the vertex are now
   kFrame,        // x0..x15: the 4D view frame, row-major (R^3 worlds ignore it)
@@ -46,7 +49,7 @@ enum class LiveCode : int {
   kExplore,      // i1: 1 starts exploring with the probe placed nearest x0..x2 (shadow), 0 stops; in R^3
                  // the probe walks the knot image last offered (offer_curve_image)
   kRelax,        // i1: 1 starts relaxing the knots (closed curves of R^3) live, 0 stops
-  kDeviceButton, // i1: DeviceButton, what a device's first button does from now on
+  kDeviceButton, // i1: DeviceButton, what a device's first button does from now on; x0: carry radius
 };
 
 // SceneEvent kinds of the live simulation.
@@ -58,8 +61,8 @@ inline constexpr int kEventCrossedUnder = 4;  // ... under
 SceneCommand live_command(LiveCode code, int i0 = 0, int i1 = 0);
 SceneCommand live_time_scale(double scale);
 SceneCommand live_settings(const PhysicsSettings& settings);
-SceneCommand live_grab(int vertex, int mode, const Vec3& hand);
-SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode);
+SceneCommand live_grab(int vertex, int mode, const Vec3& hand, double carry_radius = 0);
+SceneCommand live_grab_nearest(const Vec3& point, double radius, int mode, double carry_radius = 0);
 SceneCommand live_frame(const Frame<4>& frame);
 SceneCommand live_mapping(const DeviceMapping& mapping);
 SceneCommand live_explore(bool on, const Vec3& at = Vec3::Zero());
@@ -69,6 +72,7 @@ struct LiveOptions {
   bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
   bool start_playing = true;
   DeviceButton button = DeviceButton::kGrab;  // until a kDeviceButton command arrives
+  double button_carry = 0;                    // the carry radius of that button (kGrab)
   // Where Reset goes (copied), when not the scene simulated from now: the start of bodies that
   // were there before an object was added, the new ones as they were added (Session::add_object).
   const Scene* reset_to = nullptr;

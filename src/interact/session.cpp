@@ -250,6 +250,7 @@ void Session::start(bool start_playing) {
     lo.start_playing = start_playing;
     lo.frame = doc_.scene.frame;
     lo.button = device_button_;
+    lo.button_carry = device_carry_;
     const Scene reset_to = reset_scene();
     lo.reset_to = &reset_to;
     const Scenario* sc = doc_.scenario ? &*doc_.scenario : nullptr;
@@ -548,10 +549,13 @@ MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : M
 
 bool Session::send(const SceneCommand& cmd) { return loop_ && loop_->send(cmd); }
 
-void Session::set_device_button(DeviceButton action) {
-  if (action == device_button_) return;
+void Session::set_device_button(DeviceButton action, double carry_radius) {
+  if (action == device_button_ && carry_radius == device_carry_) return;
   device_button_ = action;
-  send(live_command(LiveCode::kDeviceButton, 0, static_cast<int>(action)));
+  device_carry_ = carry_radius;
+  SceneCommand c = live_command(LiveCode::kDeviceButton, 0, static_cast<int>(action));
+  c.x[0] = carry_radius;
+  send(c);
 }
 
 void Session::set_device(const std::string& spec) {
@@ -573,17 +577,19 @@ void Session::set_hand_buttons(const Vec3& p, std::uint32_t buttons) {
   if (loop_ && p.allFinite()) loop_->set_pointer(mapping_.to_device(p), buttons);
 }
 
-Vec3 Session::vertex_shadow(int v) const {
+Vec3 Session::vertex_shadow(int v) const { return vertex_view(v).head<3>(); }
+
+Vec4 Session::vertex_view(int v) const {
   const int o = object_of_vertex(v);
   if (o < 0 || o >= static_cast<int>(doc_.scene.objects.size()))
-    return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    return Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
   const int local = v - first_[static_cast<std::size_t>(o)];
-  Vec3 at = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  Vec4 at = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
   int i = 0;
   for_each_point(doc_.scene.objects[static_cast<std::size_t>(o)].shape, [&](const auto& p) {
     if (i++ != local) return;
-    if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) at = doc_.scene.frame.shadow(p);
-    else at = p;
+    if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) at = doc_.scene.frame.to_view(p);
+    else at << p, 0;
   });
   return at;
 }

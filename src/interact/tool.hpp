@@ -48,7 +48,8 @@ struct ToolInput {
 
 // kUndo / kRedo: Ctrl+Z / Ctrl+Shift+Z, offered to the tool first, so that work it holds and has
 // not yet made a step of the history (strokes not finished) is undone piece by piece, not lost.
-enum class ToolKey { kTab, kPin, kEscape, kBackspace, kEnter, kUndo, kRedo };
+enum class ToolKey { kTab, kPin, kEscape, kBackspace, kEnter, kUndo, kRedo,
+                     kCarry, kSmaller, kLarger };  // C, [ and ]: the Touch tool's carry and its radius
 
 // What a tool draws over the picture: in shadow space (projected by the window) or in pixels.
 struct Overlay {
@@ -106,6 +107,8 @@ class Tool {
   // Each frame, after the session's refresh: keep up with the simulation (the device's point).
   virtual void update(const ToolInput&, Session&) {}
   virtual DeviceButton device_button() const { return DeviceButton::kNone; }
+  // With kGrab: the radius of the patch a device's button carries (0: the rubber band).
+  virtual double device_carry_radius() const { return 0; }
   virtual void overlay(Overlay&, const Session&) const {}
   // A status message for the window (what just happened), taken once.
   std::string take_message() { return std::exchange(message_, std::string()); }

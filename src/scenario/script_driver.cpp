@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "core/error.hpp"
+#include "physics/patch.hpp"
 
 namespace s4d {
 
@@ -54,7 +55,13 @@ ScriptDriver<D>::ScriptDriver(const Scenario& scenario, const SceneWorld<D>& wor
     if (mode == ScriptMode::kScript ? a.by_hand == ByHand::kOnly : !by_hand) continue;
     Tool t;
     t.action = i;
-    t.vertices = selected_vertices<D>(scenario, world.first, world.count, world.world.positions(), a.select);
+    const std::vector<int> chosen =
+        selected_vertices<D>(scenario, world.first, world.count, world.world.positions(), a.select);
+    Patch patch;
+    PatchScratch scratch;
+    grow_patch<D>(world.world.model(), world.world.positions(), chosen, a.radius, patch, scratch);
+    t.vertices = std::move(patch.vertices);
+    t.weights = std::move(patch.weights);
     t.start.reserve(t.vertices.size());
     for (int v : t.vertices) tool_[static_cast<std::size_t>(v)] = 1;
     tools_.push_back(std::move(t));
@@ -79,7 +86,7 @@ void ScriptDriver<D>::apply(World<D>& world, double t) {
     const Vec<D> by = head<D>(a.by);
     for (std::size_t i = 0; i < tool.vertices.size(); ++i) {
       const int v = tool.vertices[i];
-      const Vec<D> target = tool.start[i] + (a.kind == "hold" ? 0.0 : ramp) * by;
+      const Vec<D> target = tool.start[i] + (a.kind == "hold" ? 0.0 : ramp * tool.weights[i]) * by;
       if (a.kind == "pull") {
         // Virtual coupling: spring to the target, critically damped, force-limited.
         const double c = 2 * std::sqrt(a.stiffness * model.mass[static_cast<std::size_t>(v)]);

@@ -47,7 +47,8 @@ class ScriptDriver {
   struct Tool {
     std::size_t action = 0;  // index into actions_ (the driver may be moved)
     std::vector<int> vertices;
-    std::vector<Vec<D>> start;  // positions when the tool engaged
+    std::vector<double> weights;  // how much of `by` each vertex moves (1 without a radius)
+    std::vector<Vec<D>> start;    // positions when the tool engaged
     bool engaged = false;
     bool dropped = false;  // let go for good (the user's hand took over)
   };

@@ -3,6 +3,7 @@
 // "only"), and an "until-grabbed" hold lets go for good when the user's hand takes one of its vertices.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -139,6 +140,44 @@ TEST(ScriptDriver, ABadByHandValueIsRefusedWithThePlace) {
     EXPECT_NE(std::string(e.what()).find("script[0].by_hand: must be skip, keep, until-grabbed or only"), std::string::npos)
         << e.what();
   }
+}
+
+// A move with a radius carries the patch around its vertex, each vertex by its weight, as the
+// Touch tool's carry does (the same physics/patch.hpp).
+TEST(ScriptDriver, AMoveWithARadiusCarriesThePatchByItsWeights) {
+  const std::string text = R"({
+    "version": 1,
+    "objects": [{"name": "cloth", "generator": "cloth", "params": {"n": 5, "size": 1}}],
+    "physics": {"gravity": [0, 0, 0, 0]},
+    "scenario": {
+      "name": "carry", "duration": 1,
+      "script": [{"action": "move", "select": {"object": "cloth", "vertices": [12]}, "radius": 0.6, "from": 0,
+                  "to": 0.1, "by": [0, 0, 0.3, 0]}],
+      "verdict": {"kind": "deforms", "object": "cloth", "numbers": {"min_displacement": 0.1}}
+    }
+  })";
+  const Scenario sc = scenario_of_scene(parse_scene(text, "carry.json"), "carry.json");
+  ASSERT_EQ(sc.script.size(), 1u);
+  EXPECT_DOUBLE_EQ(sc.script[0].radius, 0.6);
+  SceneWorld<4> sw = build_world<4>(sc.scene);
+  const std::vector<Vec4> start(sw.world.positions().begin(), sw.world.positions().end());
+  ScriptDriver<4> script(sc, sw);
+  for (int k = 1; k <= 150; ++k) {
+    script.apply(sw.world, k * 1e-3);
+    sw.world.step();
+  }
+  const auto x = sw.world.positions();
+  // The middle of a 5 x 5 cloth of side 1: neighbours 0.25 away (weight (1 - (0.25/0.6)^2)^2),
+  // two steps 0.5 away, corners beyond 0.6 along the cloth.
+  const double w1 = std::pow(1 - 0.25 * 0.25 / 0.36, 2), w2 = std::pow(1 - 0.25 / 0.36, 2);
+  EXPECT_NEAR(x[12].z() - start[12].z(), 0.3, 1e-9);
+  EXPECT_NEAR(x[13].z() - start[13].z(), w1 * 0.3, 1e-9);
+  EXPECT_NEAR(x[14].z() - start[14].z(), w2 * 0.3, 1e-9);
+  EXPECT_FALSE(sw.world.is_pinned(0)) << "a corner is 1.0 along the cloth, outside the patch";
+  EXPECT_TRUE(sw.world.is_pinned(14));
+  const auto& tool = script.tool_vertices();
+  EXPECT_EQ(tool[13], 1);
+  EXPECT_EQ(tool[0], 0);
 }
 
 }  // namespace
