@@ -67,6 +67,20 @@ ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window,
   return v;
 }
 
+bool to_screen(const Camera& camera, const Vec3& p, const Vec2& window, ImVec2& out);
+
+// The input file's move-to-vertex: the pointer to the vertex's pixel now (the last frame's view).
+void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, const Camera& camera, const Vec2& window) {
+  ImVec2 px;
+  const Vec4 p = model.session.vertex_view(e.vertex);
+  if (!p.allFinite() || !to_screen(camera, p.head<3>(), window, px)) {
+    model.status = "the input file's vertex " + std::to_string(e.vertex) + " is not on the screen";
+    return;
+  }
+  input.move_to(Vec2(px.x, px.y) + e.at);
+  model.grab.prefer_depth(p.w());  // its sheet, where the shadow folds others onto it
+}
+
 bool to_screen(const Camera& camera, const Vec3& p, const Vec2& window, ImVec2& out) {
   if (!p.allFinite() || camera.view_depth(p) <= camera.near_plane) return false;
   const Vec2 n = camera.ndc(p);
@@ -135,11 +149,14 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
     if (tool && in.key_pressed(GLFW_KEY_P)) tool->key(ToolKey::kPin, ti, session);
     if (tool && in.key_pressed(GLFW_KEY_BACKSPACE)) tool->key(ToolKey::kBackspace, ti, session);
+    if (tool && in.key_pressed(GLFW_KEY_C)) tool->key(ToolKey::kCarry, ti, session);
+    if (tool && in.key_pressed(GLFW_KEY_LEFT_BRACKET)) tool->key(ToolKey::kSmaller, ti, session);
+    if (tool && in.key_pressed(GLFW_KEY_RIGHT_BRACKET)) tool->key(ToolKey::kLarger, ti, session);
     if (tool && (in.key_pressed(GLFW_KEY_ENTER) || in.key_pressed(GLFW_KEY_KP_ENTER)))
       tool->key(ToolKey::kEnter, ti, session);
   }
   // A device's button does what the active tool does with a press (grab, explore, or draw itself).
-  session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone);
+  session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone, tool ? tool->device_carry_radius() : 0);
   if (tool) tool->update(ti, session);
   const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
   if (in.released(0) || !in.down(0)) {
@@ -256,6 +273,17 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
     for (std::size_t v = 0; v < snap->flags.size(); ++v)
       if (snap->flags[v] & 1) pins.push_back(v);
     j["pinned_vertices"] = pins;
+    j["carry_radius"] = st.carry_radius;
+    // Where each vertex's shadow is on the screen (null when behind the eye), for tests that
+    // press on a chosen vertex.
+    Json pixels = Json::array();
+    const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
+    for (int v = 0; v < nv; ++v) {
+      ImVec2 px;
+      const Vec3 p = s.vertex_shadow(v);
+      pixels.push_back(p.allFinite() && to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
+    }
+    j["vertex_pixels"] = pixels;
   }
   {  // the World's cells, so a test can check every saved state with a checker of its own
     Json tris = Json::array();
@@ -504,6 +532,7 @@ int run_gui_app(const GuiOptions& options) {
         else if (e.kind == InputEvent::Kind::dump) dumps.push_back(e.text);
         else if (e.kind == InputEvent::Kind::quit) model.quit = true;
         else if (e.kind == InputEvent::Kind::wait) waiting = true, wait_start = std::chrono::steady_clock::now();
+        else if (e.kind == InputEvent::Kind::move_to_vertex) move_to_vertex(input, model, e, renderer.camera(), window_size(window));
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();

@@ -594,6 +594,33 @@ void Panels::simulation_panel(GuiModel& model) {
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", sp.unit);
     }
   }
+  {  // the Touch tool: pull one vertex on the band, or carry a patch that stays where it is left
+    GrabTool& g = model.grab;
+    bool carry_before = g.carry();
+    double radius_before = g.carry_radius();
+    const auto put_back = [&] {
+      const bool c = g.carry();
+      const double r = g.carry_radius();
+      g.set_carry(carry_before);
+      g.set_carry_radius(radius_before);
+      carry_before = c;
+      radius_before = r;
+    };
+    bool carry = g.carry();
+    if (ImGui::Checkbox("carry a patch (C)", &carry)) g.set_carry(carry);
+    record_tool_setting(model, "change the touch", put_back);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("on: a drag carries the patch around the vertex (its radius along the surface),\n"
+                        "which stays held where it is let go (clear pins or P frees it; Ctrl+Z undoes it);\n"
+                        "off: a drag pulls one vertex on the rubber band");
+    if (g.carry()) {
+      float r = static_cast<float>(g.carry_radius());
+      if (ImGui::SliderFloat("radius ([ ])", &r, static_cast<float>(GrabTool::kMinCarryRadius),
+                             static_cast<float>(GrabTool::kMaxCarryRadius), "%.3f", ImGuiSliderFlags_Logarithmic))
+        g.set_carry_radius(r);
+      record_tool_setting(model, "change the carry radius", put_back);
+    }
+  }
   ImGui::Text("pins: %d", st.pinned);
   ImGui::SameLine();
   if (ImGui::SmallButton("clear pins")) {

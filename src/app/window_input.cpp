@@ -26,7 +26,7 @@ const std::map<std::string, int>& key_names() {
         {"LEFT_ALT", GLFW_KEY_LEFT_ALT}, {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
         {"RIGHT_CONTROL", GLFW_KEY_RIGHT_CONTROL}, {"RIGHT_ALT", GLFW_KEY_RIGHT_ALT}, {"F12", GLFW_KEY_F12},
         {"UP", GLFW_KEY_UP},             {"DOWN", GLFW_KEY_DOWN},             {"LEFT", GLFW_KEY_LEFT},
-        {"RIGHT", GLFW_KEY_RIGHT}};
+        {"RIGHT", GLFW_KEY_RIGHT},       {"LEFT_BRACKET", GLFW_KEY_LEFT_BRACKET}, {"RIGHT_BRACKET", GLFW_KEY_RIGHT_BRACKET}};
     for (char c = 'A'; c <= 'Z'; ++c) m[std::string(1, c)] = GLFW_KEY_A + (c - 'A');
     for (char c = '0'; c <= '9'; ++c) m[std::string(1, c)] = GLFW_KEY_0 + (c - '0');
     return m;
@@ -113,6 +113,23 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       if (!(ls >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) fail("move needs two finite pixel coordinates");
       e.kind = InputEvent::Kind::move;
       e.at = Vec2(x, y);
+    } else if (word == "move-by") {
+      double x = 0, y = 0;
+      if (!(ls >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) fail("move-by needs two finite pixel offsets");
+      e.kind = InputEvent::Kind::move_by;
+      e.at = Vec2(x, y);
+    } else if (word == "move-to-vertex") {
+      // The pointer to where a simulated vertex is on the screen when the event plays (scripts
+      // that follow a moving surface), offset by DX DY pixels.
+      double dx = 0, dy = 0;
+      if (!(ls >> e.vertex) || e.vertex < 0) fail("move-to-vertex needs a vertex number (0 or more)");
+      if (ls >> dx) {
+        if (!(ls >> dy) || !std::isfinite(dx) || !std::isfinite(dy)) fail("move-to-vertex's offset needs two finite pixel numbers");
+      } else {
+        ls.clear();
+      }
+      e.kind = InputEvent::Kind::move_to_vertex;
+      e.at = Vec2(dx, dy);
     } else if (word == "press" || word == "release") {
       if (!(ls >> arg) || button_of(arg) < 0) fail(word + " needs left, right or middle");
       e.kind = word == "press" ? InputEvent::Kind::press : InputEvent::Kind::release;
@@ -144,7 +161,7 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       e.kind = InputEvent::Kind::wait;
     } else {
       fail("unknown event '" + word +
-           "' (move, press, release, scroll, key, key-down, key-up, open, shot, dump, quit, wait)");
+           "' (move, move-by, move-to-vertex, press, release, scroll, key, key-down, key-up, open, shot, dump, quit, wait)");
     }
     if (ls >> arg) fail("unexpected '" + arg + "' at the end of the line");
     out.push_back(e);
@@ -170,6 +187,7 @@ void WindowInput::attach(GLFWwindow* window) {
 void WindowInput::apply(const InputEvent& e) {
   switch (e.kind) {
     case InputEvent::Kind::move: cursor_ = e.at; break;
+    case InputEvent::Kind::move_by: cursor_ += e.at; break;
     case InputEvent::Kind::press:
       held_[static_cast<std::size_t>(e.button)] = true;
       pressed_[static_cast<std::size_t>(e.button)] = true;
@@ -214,7 +232,7 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   }
   for (const InputEvent& e : events) {
     if (e.kind == InputEvent::Kind::open || e.kind == InputEvent::Kind::shot || e.kind == InputEvent::Kind::dump ||
-        e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait)
+        e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait || e.kind == InputEvent::Kind::move_to_vertex)
       commands.push_back(e);
     else
       apply(e);

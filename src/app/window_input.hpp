@@ -31,7 +31,8 @@ struct GLFWwindow;
 namespace s4d {
 
 struct InputEvent {
-  enum class Kind { move, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit, wait };
+  enum class Kind { move, move_by, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit, wait,
+                    move_to_vertex };
   Kind kind = Kind::move;
   int frame = 0;      // the file's frame (0 for live events)
   Vec2 at = Vec2::Zero();
@@ -40,6 +41,7 @@ struct InputEvent {
   int key = 0;        // GLFW key code
   unsigned codepoint = 0;
   std::string text;   // open / shot / dump argument
+  int vertex = -1;    // move_to_vertex: the simulated vertex (its pixel offset by `at`)
 };
 
 // Reads an input file; throws ParseError (file:line: what is wrong) on a malformed line.
@@ -70,6 +72,8 @@ class WindowInput {
   bool shift() const, ctrl() const, alt() const;
   Vec2 cursor_delta() const { return cursor_ - last_cursor_; }
 
+  // Puts the pointer at `pixel` now (the input file's move-to-vertex, once the window knows where).
+  void move_to(const Vec2& pixel) { cursor_ = pixel; }
   // GLFW's callbacks land here (public for the C trampolines).
   void live(const InputEvent& e) { live_.push_back(e); }
   GLFWwindow* window() const { return window_; }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "interact/live_simulation.hpp"
 #include "interact/session.hpp"
@@ -17,8 +18,11 @@ const char* along_what(const Session& s) { return s.dimension() == 3 ? "along th
 }  // namespace
 
 std::string GrabTool::help() const {
-  std::string h = "touch: drag a surface or a strand to pull it (Alt: along the shadow ray), Tab: next sheet, "
-                  "P / right click: pin";
+  std::string h = carry_ ? "touch: drag to carry the patch of radius " + std::to_string(carry_radius_).substr(0, 5) +
+                               " (it stays held; [ ] size it, C: pull instead), Alt: along the shadow ray, Tab: next sheet, "
+                               "P / right click: pin"
+                         : "touch: drag a surface or a strand to pull it (Alt: along the shadow ray, C: carry a patch), "
+                           "Tab: next sheet, P / right click: pin";
   if (hits_.size() > 1)
     h = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) + " under the cursor (Tab: next); " + h;
   return h;
@@ -44,8 +48,17 @@ std::vector<SheetHit> GrabTool::pick(const ToolInput& in, const Session& s) {
 
 void GrabTool::hover(const ToolInput& in, Session& s) {
   hits_ = pick(in, s);
+  right_ = in.view.right;
+  up_ = in.view.up;
   if ((in.view.cursor - tab_cursor_).norm() > 4) sheet_ = 0;
   if (sheet_ >= static_cast<int>(hits_.size())) sheet_ = 0;
+  if (std::isfinite(preferred_w_) && !hits_.empty()) {
+    for (std::size_t i = 0; i < hits_.size(); ++i)
+      if (std::abs(hits_[i].w - preferred_w_) < std::abs(hits_[static_cast<std::size_t>(sheet_)].w - preferred_w_))
+        sheet_ = static_cast<int>(i);
+    tab_cursor_ = in.view.cursor;
+    preferred_w_ = std::numeric_limits<double>::quiet_NaN();
+  }
   // The mouse's hand rests where a press would take hold, so the band starts slack.
   hand_ = hits_.empty() ? in.view.on_plane_through(in.view.centre) : hits_[static_cast<std::size_t>(sheet_)].point;
   s.set_hand(hand_, false);
@@ -61,10 +74,12 @@ bool GrabTool::press(const ToolInput& in, Session& s) {
   plane_point_ = h.point;
   hand_ = h.point;
   s.set_hand(hand_, true);
-  s.record("drag vertex " + std::to_string(v) + (along_w_ ? std::string(" ") + along_what(s) : ""));
-  s.send(live_grab(v, along_w_ ? 1 : 0, hand_));
+  const std::string how = carry_ ? "carry the patch around vertex " : "drag vertex ";
+  s.record(how + std::to_string(v) + (along_w_ ? std::string(" ") + along_what(s) : ""));
+  s.send(live_grab(v, along_w_ ? 1 : 0, hand_, carry_ ? carry_radius_ : 0));
   holding_ = true;
-  message_ = "holding vertex " + std::to_string(v) + (along_w_ ? std::string(" (") + along_what(s) + ")" : "");
+  message_ = (carry_ ? "carrying the patch around vertex " : "holding vertex ") + std::to_string(v) +
+             (along_w_ ? std::string(" (") + along_what(s) + ")" : "");
   return true;
 }
 
@@ -111,7 +126,24 @@ bool GrabTool::right_click(const ToolInput& in, Session& s) {
   return true;
 }
 
+void GrabTool::set_carry_radius(double r) {
+  if (std::isfinite(r)) carry_radius_ = std::clamp(r, kMinCarryRadius, kMaxCarryRadius);
+}
+
 bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
+  if (k == ToolKey::kCarry && !holding_) {
+    carry_ = !carry_;
+    message_ = carry_ ? "carry: a drag carries the patch of radius " + std::to_string(carry_radius_).substr(0, 5) +
+                            " around the vertex, and it stays held ([ ] size it)"
+                      : "pull: a drag pulls one vertex on the rubber band";
+    return true;
+  }
+  if ((k == ToolKey::kSmaller || k == ToolKey::kLarger) && !holding_) {
+    set_carry_radius(carry_radius_ * (k == ToolKey::kLarger ? 1.25 : 0.8));
+    carry_ = true;
+    message_ = "carry radius " + std::to_string(carry_radius_).substr(0, 5);
+    return true;
+  }
   if (k == ToolKey::kTab && !holding_) {
     hover(in, s);
     if (hits_.size() > 1) {
@@ -150,14 +182,27 @@ void GrabTool::overlay(Overlay& o, const Session& s) const {
   if (!holding_ && !hits_.empty()) {
     const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
     o.dots.push_back({h.point, overlay_colour(1, 1, 1, 0.9), 6, false});
+    if (carry_) {  // the patch's reach (along the surface it is measured; this circle shows its size)
+      constexpr int kSides = 48;
+      for (int i = 0; i < kSides; ++i) {
+        const double a = 2 * std::numbers::pi * i / kSides, b = 2 * std::numbers::pi * (i + 1) / kSides;
+        o.lines.push_back({h.point + carry_radius_ * (std::cos(a) * right_ + std::sin(a) * up_),
+                           h.point + carry_radius_ * (std::cos(b) * right_ + std::sin(b) * up_),
+                           overlay_colour(1, 1, 1, 0.6), 1.5f});
+      }
+    }
     for (std::size_t i = 0; i < hits_.size(); ++i)
       if (static_cast<int>(i) != sheet_) o.dots.push_back({hits_[i].point, overlay_colour(1, 1, 1, 0.35), 3, false});
   }
   if (!snap) return;
+  // Pins: a carried patch holds many, drawn finer so that the surface stays visible.
+  std::size_t pins = 0;
+  for (std::uint8_t f : snap->flags) pins += f & 1;
+  const float pin_radius = pins > 24 ? 2.5f : 4;
   for (std::size_t v = 0; v < snap->flags.size(); ++v)
     if (snap->flags[v] & 1) {
       const Vec3 p = s.vertex_shadow(static_cast<int>(v));
-      if (p.allFinite()) o.dots.push_back({p, overlay_colour(1, 0.55, 0.1), 4, true});
+      if (p.allFinite()) o.dots.push_back({p, overlay_colour(1, 0.55, 0.1), pin_radius, true});
     }
   if (snap->status.held_vertex >= 0) {
     // The band: green slack, yellow, red at the most it may pull.

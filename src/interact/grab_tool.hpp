@@ -3,7 +3,10 @@
 // renders; Alt drags it along the shadow ray instead (w, or a knot's depth: its shadow stays); Tab
 // picks the next sheet or strand under the cursor; P or a right click pins and unpins; the wheel
 // moves the hand in depth while holding. On empty space the drag turns the view as usual.
+// With carry on (C; [ and ] size it), the drag carries the patch around the vertex instead: it
+// follows the hand and stays held where it is let go (the local deformations of Fig. 12).
 #pragma once
+#include <limits>
 #include <vector>
 
 #include "interact/pick.hpp"
@@ -16,6 +19,7 @@ class GrabTool final : public Tool {
   const char* name() const override { return "Touch"; }
   std::string help() const override;
   DeviceButton device_button() const override { return DeviceButton::kGrab; }
+  double device_carry_radius() const override { return carry_ ? carry_radius_ : 0; }
   bool press(const ToolInput& in, Session& s) override;
   void drag(const ToolInput& in, Session& s) override;
   void release(const ToolInput& in, Session& s) override;
@@ -28,6 +32,17 @@ class GrabTool final : public Tool {
   // The sheets under the cursor at the last hover, and the one a press would take.
   const std::vector<SheetHit>& hits() const { return hits_; }
   int sheet() const { return sheet_; }
+
+  // Carrying a patch (true) or pulling one vertex on the band; the patch's radius along the
+  // surface, in scene units (clamped to [kMinCarryRadius, kMaxCarryRadius]).
+  bool carry() const { return carry_; }
+  double carry_radius() const { return carry_radius_; }
+  void set_carry(bool on) { carry_ = on; }
+  void set_carry_radius(double r);
+  // The next hover takes the sheet under the cursor nearest this depth in w, as Tab would (an
+  // input script pointing at a vertex means that vertex's sheet).
+  void prefer_depth(double w) { preferred_w_ = w; }
+  static constexpr double kMinCarryRadius = 0.01, kMaxCarryRadius = 10;
 
  private:
   // The world vertex of hit h, or -1.
@@ -42,8 +57,12 @@ class GrabTool final : public Tool {
   Vec2 tab_cursor_ = Vec2::Constant(-1e9);  // where Tab was last pressed
   bool holding_ = false;
   bool along_w_ = false;
+  bool carry_ = false;
+  double carry_radius_ = 0.5;
   Vec3 plane_point_ = Vec3::Zero();  // the drag plane passes through it, facing the eye
   Vec3 hand_ = Vec3::Zero();
+  Vec3 right_ = Vec3::UnitX(), up_ = Vec3::UnitY();  // the view's axes at the last hover
+  double preferred_w_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace s4d
