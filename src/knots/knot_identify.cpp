@@ -7,6 +7,7 @@
 #include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 
 #include <Eigen/Eigenvalues>
@@ -315,8 +316,13 @@ struct LinkPieceSearch {
     return lk == abs_linking && same_knot_types(types, knots);
   }
 
-  void record(const std::vector<const LinkPiece*>& path, int splits) {
-    if (possible(path, splits)) found.push_back(describe(path, splits));
+  void record(std::vector<const LinkPiece*> path, int splits) {
+    if (!possible(path, splits)) return;
+    std::sort(path.begin(), path.end(), [](const LinkPiece* a, const LinkPiece* b) {
+      return std::tie(a->crossings, a->text) < std::tie(b->crossings, b->text);
+    });
+    std::string text = describe(path, splits);
+    if (std::find(found.begin(), found.end(), text) == found.end()) found.push_back(std::move(text));
   }
 
   static std::string describe(const std::vector<const LinkPiece*>& path, int splits) {
