@@ -240,6 +240,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
       o.shape = std::move(c);
       model.session.record("create " + o.name);
       model.scene().objects.push_back(std::move(o));
+      selected_ = static_cast<int>(model.scene().objects.size()) - 1;  // the Knot panel names it
       model.scene().view.intersections = true;
       model.session.rebuild();
       model.status = "made " + making_ + " from the table";
@@ -252,6 +253,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
   if (!table_open_) return;
   ImGui::SetNextWindowSize(ImVec2(360, 420), ImGuiCond_FirstUseEver);
   ImGui::Begin("Knot from the table", &table_open_);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type the name at once
   ImGui::InputText("name", filter_, sizeof filter_);
   ImGui::SameLine();
   ImGui::Checkbox("mirror", &mirror_);
@@ -273,7 +275,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
   }
   ImGui::EndChild();
   const bool busy = made_.valid();
-  if (ImGui::Button(busy ? "making..." : "Create") && !busy && filter_[0]) {
+  if (button(busy ? "making..." : "Create") && !busy && filter_[0]) {
     making_ = filter_;
     const std::string spec = making_ + (mirror_ ? " mirror" : "");
     made_ = std::async(std::launch::async, [spec] { return make_table_knot(spec); });
