@@ -167,18 +167,6 @@ std::vector<LinkTableEntry> read_knotpy(const std::string& path) {
 
 // [SECTION] invariants
 
-std::string component_knot(const KnotDiagram& d, int c) {
-  const KnotIdentification id = identify_diagram(component_diagram(d, c));
-  if (id.kind == KnotKind::kUnknot && id.proven) return "unknot";
-  if (id.candidates.size() != 1 || !id.proven) return "?";
-  std::vector<std::string> factors;
-  for (const auto& f : id.candidates[0]) factors.push_back(f.entry->display_name());
-  std::sort(factors.begin(), factors.end());
-  std::string s;
-  for (const auto& f : factors) s += (s.empty() ? "" : "#") + f;
-  return s;
-}
-
 std::map<std::uint64_t, Laurent2> g_polys;  // fingerprint -> polynomial, to prove no collision
 int g_collisions = 0;
 
@@ -214,7 +202,8 @@ void fill_invariants(LinkTableEntry& e) {
   e.keys.assign(keys.begin(), keys.end());
   e.mirror_keys.assign(mirror_keys.begin(), mirror_keys.end());
   e.component_knots.clear();
-  for (int c = 0; c < e.components; ++c) e.component_knots.push_back(component_knot(d, c));
+  for (int c = 0; c < e.components; ++c)
+    e.component_knots.push_back(knot_type_up_to_mirror(identify_diagram(component_diagram(d, c))));
   std::sort(e.component_knots.begin(), e.component_knots.end());
   e.abs_linking.clear();
   const auto lk = d.linking_numbers();
