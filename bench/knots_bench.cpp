@@ -95,6 +95,37 @@ BENCHMARK(BM_KnotInfoLive500)->DenseRange(0, 6)->Unit(benchmark::kMillisecond)->
       return *std::max_element(v.begin(), v.end());
     });
 
+// 500-point curves of table links (the Borromean rings; 4 and 5 components; 11 crossings with a
+// split alternative to rule out), named live as the panel does.
+const std::vector<Case>& link_cases() {
+  static const std::vector<Case> all = [] {
+    std::vector<Case> c;
+    for (const char* name : {"L6a4", "L10n113", "L11a1", "L11n459"})
+      c.push_back({name, resample_curve_to_count(make_table_knot(name), 500)});
+    return c;
+  }();
+  return all;
+}
+
+void BM_LinkInfoLive500(benchmark::State& state) {
+  const Case& c = link_cases()[state.range(0)];
+  KnotIndex::shipped();
+  LinkTable::shipped();
+  KnotInfoOptions o;
+  o.refine = false;
+  KnotInfo k = knot_info(c.curve, std::nullopt, o);  // the split/composite pieces are made once
+  for (auto _ : state) {
+    k = knot_info(c.curve, std::nullopt, o);
+    benchmark::DoNotOptimize(k.name);
+  }
+  state.SetLabel(std::string(c.name) + " (" + std::to_string(c.curve.point_count()) + " points, " +
+                 std::to_string(k.view_crossings) + " in view) -> " + k.name + (k.proven ? " (proven)" : ""));
+}
+BENCHMARK(BM_LinkInfoLive500)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->Repetitions(5)
+    ->ReportAggregatesOnly(true)->ComputeStatistics("max", [](const std::vector<double>& v) {
+      return *std::max_element(v.begin(), v.end());
+    });
+
 // The Conway knot: its mutant 11n_42 shares every polynomial; covers and a Reidemeister search.
 void BM_KnotInfoRefineConway(benchmark::State& state) {
   const Case& c = table_cases()[3];

@@ -75,6 +75,12 @@ json identification_json(const KnotIdentification& id) {
   j["candidates"] = cands;
   if (id.kind == KnotKind::kLink) {
     j["link_name"] = id.link_name;
+    json links = json::array();
+    for (const auto& l : id.link_candidates)
+      links.push_back({{"text", l.text()},
+                       {"table_name", l.entry ? l.entry->name : ""},
+                       {"chirality", l.entry ? chirality_name(l.chirality) : ""}});
+    j["link_candidates"] = links;
     json comps = json::array();
     for (const auto& c : id.components) comps.push_back(identification_json(c));
     j["components"] = comps;
@@ -83,8 +89,12 @@ json identification_json(const KnotIdentification& id) {
 }
 
 void print_identification(const KnotIdentification& id, const std::string& indent = "") {
-  std::cout << indent << "knot: " << id.headline() << "\n";
+  std::cout << indent << (id.kind == KnotKind::kLink ? "link: " : "knot: ") << id.headline() << "\n";
   const auto& v = id.invariants;
+  if (id.link_candidates.size() > 1) {
+    std::cout << indent << "candidates (the invariants cannot decide):\n";
+    for (const auto& l : id.link_candidates) std::cout << indent << "  " << l.text() << "\n";
+  }
   if (id.candidates.size() > 1) {
     std::cout << indent << "candidates (the invariants cannot decide):\n";
     for (const auto& f : id.candidates) std::cout << indent << "  " << factorisation_text(f) << "\n";
@@ -400,7 +410,7 @@ void setup(CLI::App& knot) {
   static bool make_list = false, make_json = false;
   static DiagramEmbedding embed;
   auto* make = knot.add_subcommand(
-      "make", "a 3D curve of a knot from the table (3_1, 11n_34, T(2,5), Hopf link, m3_1, ...)");
+      "make", "a 3D curve of a knot or link from the table (3_1, 11n_34, T(2,5), L6a4, Hopf link, m3_1, ...)");
   make->add_option("name", make_name, "knot name; 'NAME mirror', 'mNAME' or 'NAME*' for the mirror image");
   make->add_option("--out", make_out, "where to write the curve");
   make->add_option("--relax", embed.relax_iterations, "relaxation steps")
@@ -411,7 +421,8 @@ void setup(CLI::App& knot) {
   make->callback([] {
     if (make_list) {
       for (const auto& t : knot_table_names())
-        std::cout << t.name << "\t" << t.crossings << "\t" << t.source << "\n";
+        std::cout << t.name << "\t" << t.crossings << "\t" << t.source << (t.alias.empty() ? "" : "\t" + t.alias)
+                  << "\n";
       return;
     }
     if (make_name.empty() || make_out.empty())

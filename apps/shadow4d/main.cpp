@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   app.add_option("--input", gui.input,
                  "GUI: play timed mouse and key events from this file (lines 'FRAME EVENT ARGS': move X Y, "
                  "move-by DX DY, move-to-vertex N [DX DY] (where simulated vertex N is on the screen then), "
-                 "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, open SPEC, "
+                 "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, type TEXT, open SPEC, "
                  "shot FILE, dump FILE, quit, wait: until background work is done)")
       ->group("GUI scripting");
   app.add_option("--autosave", gui.autosave,

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstring>
 #include <functional>
@@ -40,6 +41,11 @@ std::vector<int> curve_objects(const Scene& scene) {
   for (std::size_t o = 0; o < scene.objects.size(); ++o)
     if (std::holds_alternative<Curve<3>>(scene.objects[o].shape)) curves.push_back(static_cast<int>(o));
   return curves;
+}
+
+std::string lower_case(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
 }
 
 void mix(std::size_t& h, double x) { h = h * 1000003u ^ std::hash<double>()(x); }
@@ -182,6 +188,11 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
     const KnotInfo& k = *shown_->info;
     ImGui::TextWrapped("%s%s", k.name.c_str(), k.proven ? "  (proven)" : "");
     ImGui::TextWrapped("%s", k.chirality.c_str());
+    if (k.components > 1) {
+      std::string parts;
+      for (const auto& c : k.identification.components) parts += (parts.empty() ? "" : ", ") + c.name;
+      ImGui::TextWrapped("components: %s", parts.c_str());
+    }
     if (k.candidates.size() > 1) {
       std::string all;
       for (const std::string& n : k.candidates) all += (all.empty() ? "" : ", ") + n;
@@ -229,6 +240,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
       o.shape = std::move(c);
       model.session.record("create " + o.name);
       model.scene().objects.push_back(std::move(o));
+      selected_ = static_cast<int>(model.scene().objects.size()) - 1;  // the Knot panel names it
       model.scene().view.intersections = true;
       model.session.rebuild();
       model.status = "made " + making_ + " from the table";
@@ -241,24 +253,29 @@ void KnotPanels::table_dialog(GuiModel& model) {
   if (!table_open_) return;
   ImGui::SetNextWindowSize(ImVec2(360, 420), ImGuiCond_FirstUseEver);
   ImGui::Begin("Knot from the table", &table_open_);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type the name at once
   ImGui::InputText("name", filter_, sizeof filter_);
   ImGui::SameLine();
   ImGui::Checkbox("mirror", &mirror_);
   ImGui::BeginChild("names", ImVec2(0, -60), true);
   int shown = 0;
+  const std::string filter = lower_case(filter_);
   for (const TableName& n : names_) {
-    if (filter_[0] && n.name.find(filter_) == std::string::npos) continue;
+    if (!filter.empty() && lower_case(n.name).find(filter) == std::string::npos &&
+        lower_case(n.alias).find(filter) == std::string::npos)
+      continue;
     if (++shown > 300) {
       ImGui::TextDisabled("... type more of the name");
       break;
     }
-    char label[96];
-    std::snprintf(label, sizeof label, "%s   (%d crossings, %s)", n.name.c_str(), n.crossings, n.source.c_str());
+    char label[128];
+    std::snprintf(label, sizeof label, "%s%s%s   (%d crossings, %s)", n.name.c_str(), n.alias.empty() ? "" : "  ",
+                  n.alias.c_str(), n.crossings, n.source.c_str());
     if (ImGui::Selectable(label, n.name == filter_)) std::snprintf(filter_, sizeof filter_, "%s", n.name.c_str());
   }
   ImGui::EndChild();
   const bool busy = made_.valid();
-  if (ImGui::Button(busy ? "making..." : "Create") && !busy && filter_[0]) {
+  if (button(busy ? "making..." : "Create") && !busy && filter_[0]) {
     making_ = filter_;
     const std::string spec = making_ + (mirror_ ? " mirror" : "");
     made_ = std::async(std::launch::async, [spec] { return make_table_knot(spec); });

@@ -155,13 +155,23 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       while (!e.text.empty() && std::isspace(static_cast<unsigned char>(e.text.back()))) e.text.pop_back();
       if (e.text.empty()) fail(word + " needs a file");
       e.kind = word == "open" ? InputEvent::Kind::open : word == "shot" ? InputEvent::Kind::shot : InputEvent::Kind::dump;
+    } else if (word == "type") {  // text typed into the focused field, one character per event
+      std::getline(ls >> std::ws, arg);
+      if (arg.empty()) fail("type needs the text to type");
+      e.kind = InputEvent::Kind::chr;
+      for (unsigned char c : arg) {
+        e.codepoint = c;
+        out.push_back(e);
+      }
+      continue;
     } else if (word == "quit") {
       e.kind = InputEvent::Kind::quit;
     } else if (word == "wait") {
       e.kind = InputEvent::Kind::wait;
     } else {
       fail("unknown event '" + word +
-           "' (move, move-by, move-to-vertex, press, release, scroll, key, key-down, key-up, open, shot, dump, quit, wait)");
+           "' (move, move-by, move-to-vertex, press, release, scroll, key, key-down, key-up, type, open, shot, dump, "
+           "quit, wait)");
     }
     if (ls >> arg) fail("unexpected '" + arg + "' at the end of the line");
     out.push_back(e);

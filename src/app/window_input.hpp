@@ -9,6 +9,7 @@
 //   16 key-down NAME       17 key-up NAME       18 key NAME (down and up)
 //      NAME: a letter or digit, TAB, ESCAPE, ENTER, BACKSPACE, DELETE, SPACE, LEFT_SHIFT,
 //      LEFT_CONTROL, LEFT_ALT, RIGHT_SHIFT, RIGHT_CONTROL, RIGHT_ALT, F12, UP, DOWN, LEFT, RIGHT
+//   19 type TEXT           TEXT typed (characters) into the focused text field
 //   19 open SPEC           open a scene, scenario, mesh, curve or generator call
 //   20 shot FILE.png       save the window (panels included) after this frame
 //   21 dump FILE.json      write the session's state (simulation, checks, vertex positions)

@@ -134,6 +134,29 @@ KnotDiagram KnotDiagram::with_crossing_changed(int k) const {
   return d;
 }
 
+KnotDiagram KnotDiagram::with_component_reversed(int c) const {
+  if (c < 0 || c >= component_count())
+    throw Error("component " + std::to_string(c + 1) + " does not exist (the diagram has " +
+                std::to_string(component_count()) + " components)");
+  KnotDiagram d = *this;
+  std::reverse(d.components[c].begin(), d.components[c].end());
+  for (auto& x : d.crossings)
+    if ((passages[x.over].component == c) != (passages[x.under].component == c)) x.sign = -x.sign;
+  d.normalise();
+  return d;
+}
+
+KnotDiagram KnotDiagram::mirrored() const {
+  KnotDiagram d = *this;
+  for (auto& c : d.crossings) {
+    c.sign = -c.sign;
+    std::swap(c.over, c.under);
+    std::swap(c.depth_over, c.depth_under);
+  }
+  for (auto& p : d.passages) p.over = !p.over;
+  return d;
+}
+
 void KnotDiagram::normalise() {
   std::vector<int> label(crossings.size(), -1);
   int next = 0;

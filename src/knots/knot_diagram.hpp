@@ -55,6 +55,11 @@ struct KnotDiagram {
 
   // The same diagram with crossing k (0-based) changed: over and under swapped, sign negated.
   KnotDiagram with_crossing_changed(int k) const;
+  // The same diagram with component c's orientation reversed: its passages in reverse order, the
+  // signs of its crossings with other components negated.
+  KnotDiagram with_component_reversed(int c) const;
+  // The mirror image: every crossing changed.
+  KnotDiagram mirrored() const;
   // Relabels crossings in order of first visit (components in order, from their first passage).
   void normalise();
 };

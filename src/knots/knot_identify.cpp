@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <set>
+#include <tuple>
+#include <unordered_map>
 
 #include <Eigen/Eigenvalues>
 
@@ -48,6 +52,22 @@ const char* sameness_name(Sameness s) {
 std::string KnotFactor::text() const {
   std::string s = entry ? entry->display_name() : "?";
   if (chirality == Chirality::kMirror) s += " mirror";
+  return s;
+}
+
+std::string LinkCandidate::text() const {
+  if (!entry) return other;
+  return entry->name + (chirality == Chirality::kMirror ? " mirror" : "");
+}
+
+std::string knot_type_up_to_mirror(const KnotIdentification& k) {
+  if (k.kind == KnotKind::kUnknot && k.proven) return "unknot";
+  if (!k.proven || k.candidates.size() != 1) return "?";
+  std::vector<std::string> factors;
+  for (const auto& f : k.candidates[0]) factors.push_back(f.entry->display_name());
+  std::sort(factors.begin(), factors.end());
+  std::string s;
+  for (const auto& f : factors) s += (s.empty() ? "" : "#") + f;
   return s;
 }
 
@@ -201,36 +221,207 @@ void identify_knot_invariants(KnotIdentification& id, const KnotIndex& index, bo
   }
 }
 
-// Well-known links by HOMFLY-PT, made once from braid words.
-struct KnownLink {
-  const char* name;
-  int strands;
-  std::vector<int> word;
+// [SECTION] links
+
+// Multisets of component knot types, "?" matching any one type.
+bool same_knot_types(std::vector<std::string> table, std::vector<std::string> mine) {
+  if (table.size() != mine.size()) return false;
+  int wild_table = 0, wild_mine = 0;
+  for (const auto& t : table) wild_table += t == "?";
+  for (const auto& m : mine) wild_mine += m == "?";
+  int unmatched_mine = 0;
+  for (const auto& m : mine) {
+    if (m == "?") continue;
+    const auto it = std::find(table.begin(), table.end(), m);
+    if (it == table.end()) ++unmatched_mine;
+    else *it = "=";
+  }
+  int unmatched_table = 0;
+  for (const auto& t : table) unmatched_table += t != "?" && t != "=";
+  return unmatched_mine <= wild_table && unmatched_table <= wild_mine;
+}
+
+// A prime piece a split or composite link could be made of: a knot or a table link, in one
+// orientation and chirality.
+struct LinkPiece {
+  std::uint64_t key = 0, inverse = 0;  // fingerprint and its inverse mod p
+  int crossings = 0;
+  std::string text;
+  std::vector<std::string> knots;  // its components' knot types (LinkTableEntry::component_knots)
+  std::vector<int> abs_linking;    // as LinkTableEntry::abs_linking
 };
 
-std::string known_link_name(const KnotInvariants& inv) {
-  static const std::vector<std::pair<std::uint64_t, std::string>> table = [] {
-    const std::vector<KnownLink> links = {
-        {"Hopf link (L2a1)", 2, {1, 1}},
-        {"Solomon link (L4a1, T(2,4))", 2, {1, 1, 1, 1}},
-        {"Borromean rings (L6a4)", 3, {1, -2, 1, -2, 1, -2}},
-        {"T(2,6) torus link", 2, {1, 1, 1, 1, 1, 1}},
-        {"T(3,3) torus link", 3, {1, 2, 1, 2, 1, 2}},
-    };
-    std::vector<std::pair<std::uint64_t, std::string>> t;
-    for (const auto& l : links) {
-      const KnotInvariants inv = compute_invariants(braid_diagram(l.strands, l.word));
-      t.emplace_back(inv.fingerprint, l.name);
-      if (inv.mirror_fingerprint != inv.fingerprint)
-        t.emplace_back(inv.mirror_fingerprint, std::string(l.name) + " mirror");
+struct LinkPieces {
+  std::vector<LinkPiece> all;                          // by crossings
+  std::unordered_multimap<std::uint64_t, int> by_key;  // key: index into all
+  std::uint64_t delta_inverse = 0;                     // 1 / P(2-component unlink)
+};
+
+// Knots of the index (both chiralities known up to kFactorCrossings) and every orientation of the
+// table's links, made once per (index, table).
+const LinkPieces& link_pieces(const KnotIndex& index, const LinkTable& links) {
+  static std::mutex mutex;
+  static std::map<std::pair<const KnotIndex*, const LinkTable*>, LinkPieces> made;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto [it, fresh] = made.try_emplace({&index, &links});
+  LinkPieces& p = it->second;
+  if (!fresh) return p;
+  auto add = [&](std::uint64_t key, int crossings, std::string text, std::vector<std::string> knots,
+                 std::vector<int> abs_linking) {
+    p.all.push_back({key, modp::inv(key), crossings, std::move(text), std::move(knots), std::move(abs_linking)});
+  };
+  for (const auto& e : index.entries())
+    if (e.crossings <= KnotIndex::kFactorCrossings && e.mirror_key != 0) {
+      add(e.key, e.crossings, e.display_name(), {e.display_name()}, {});
+      if (!e.homfly_symmetric) add(e.mirror_key, e.crossings, e.display_name() + " mirror", {e.display_name()}, {});
     }
-    return t;
-  }();
-  if (inv.homfly == unlink_homfly(inv.components))
-    return "unlink of " + std::to_string(inv.components) + " components (by HOMFLY-PT)";
-  for (const auto& [key, name] : table)
-    if (key == inv.fingerprint) return name;
-  return {};
+  for (const auto& l : links.entries()) {
+    for (auto k : l.keys) add(k, l.crossings, l.name, l.component_knots, l.abs_linking);
+    for (auto k : l.mirror_keys)
+      if (std::find(l.keys.begin(), l.keys.end(), k) == l.keys.end())
+        add(k, l.crossings, l.name + " mirror", l.component_knots, l.abs_linking);
+  }
+  std::stable_sort(p.all.begin(), p.all.end(), [](const LinkPiece& a, const LinkPiece& b) { return a.crossings < b.crossings; });
+  for (std::size_t i = 0; i < p.all.size(); ++i) p.by_key.emplace(p.all[i].key, static_cast<int>(i));
+  p.delta_inverse = modp::inv(homfly_fingerprint(unlink_homfly(2)));
+  return p;
+}
+
+// Split or composite links whose HOMFLY-PT polynomial is `key`: P(A # B) = P(A) P(B) and
+// P(A split from B) = delta P(A) P(B), so `key` = delta^s times a product of pieces of at most
+// `budget` crossings in all (at least two pieces, or one and s >= 1). Stops after `limit`.
+struct LinkPieceSearch {
+  const LinkPieces& pieces;
+  const std::vector<std::string>& knots;  // the link's components' types (knot_type_up_to_mirror)
+  const std::vector<int>& abs_linking;    // and its |lk|, sorted
+  std::size_t limit = 4;
+  std::vector<std::string> found;
+
+  // Without connected sums the components and linking numbers of the split link are known: they
+  // must be the link's own.
+  bool possible(const std::vector<const LinkPiece*>& path, int splits) const {
+    const int k = static_cast<int>(path.size());
+    if (k - 1 > splits) return true;  // connected sums mix components: not checked
+    std::vector<std::string> types;
+    std::vector<int> lk;
+    for (const LinkPiece* p : path) {
+      types.insert(types.end(), p->knots.begin(), p->knots.end());
+      lk.insert(lk.end(), p->abs_linking.begin(), p->abs_linking.end());
+    }
+    for (int i = std::max(0, k - 1); i < splits; ++i) types.push_back("unknot");
+    const std::size_t m = types.size();
+    if (m != knots.size()) return false;
+    lk.resize(m * (m - 1) / 2, 0);  // pairs in different parts are unlinked
+    std::sort(lk.begin(), lk.end());
+    return lk == abs_linking && same_knot_types(types, knots);
+  }
+
+  void record(std::vector<const LinkPiece*> path, int splits) {
+    if (!possible(path, splits)) return;
+    std::sort(path.begin(), path.end(), [](const LinkPiece* a, const LinkPiece* b) {
+      return std::tie(a->crossings, a->text) < std::tie(b->crossings, b->text);
+    });
+    std::string text = describe(path, splits);
+    if (std::find(found.begin(), found.end(), text) == found.end()) found.push_back(std::move(text));
+  }
+
+  static std::string describe(const std::vector<const LinkPiece*>& path, int splits) {
+    const int k = static_cast<int>(path.size());
+    const int sums = std::max(0, k - 1 - splits);  // the rest of the joins are splits
+    std::string s = splits ? "split: " : "";
+    for (int i = 0; i < k; ++i) s += (i == 0 ? "" : i <= sums ? " # " : " and ") + path[i]->text;
+    for (int i = std::max(0, k - 1); i < splits; ++i) s += " and unknot";
+    return s;
+  }
+
+  void search(std::uint64_t rest, int budget, std::size_t first, int splits, std::vector<const LinkPiece*>& path) {
+    if (found.size() >= limit) return;
+    const bool enough = path.size() >= 1 && (path.size() >= 2 || splits >= 1);
+    if (rest == 1 && enough) record(path, splits);
+    for (auto [lo, hi] = pieces.by_key.equal_range(rest); lo != hi; ++lo) {
+      const LinkPiece& leaf = pieces.all[lo->second];
+      if (leaf.crossings > budget || (path.empty() && splits == 0) || found.size() >= limit) continue;
+      path.push_back(&leaf);
+      record(path, splits);
+      path.pop_back();
+    }
+    for (std::size_t i = first; i < pieces.all.size(); ++i) {
+      const LinkPiece& p = pieces.all[i];
+      if (p.crossings + 2 > budget) break;  // the rest needs a piece of at least 2 crossings
+      path.push_back(&p);
+      search(modp::mul(rest, p.inverse), budget - p.crossings, i, splits, path);
+      path.pop_back();
+    }
+  }
+};
+
+std::string link_summary(const KnotIdentification& id) {
+  std::string s = "link of " + std::to_string(id.components.size()) + " components: ";
+  for (std::size_t i = 0; i < id.components.size(); ++i) s += (i ? ", " : "") + id.components[i].name;
+  const auto& lk = id.invariants.linking;
+  s += "; linking numbers";
+  for (std::size_t i = 0; i < lk.size(); ++i)
+    for (std::size_t j = i + 1; j < lk.size(); ++j)
+      s += " lk(" + std::to_string(i) + "," + std::to_string(j) + ")=" + std::to_string(lk[i][j]);
+  return s;
+}
+
+void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTable& links) {
+  const KnotInvariants& inv = id.invariants;
+  const int m = inv.components, c = inv.simplified_crossings;
+  const std::string table_range = "up to " + std::to_string(links.max_crossings()) + " crossings";
+  if (inv.homfly == unlink_homfly(m)) {
+    id.proven = c == 0;
+    id.link_name = "unlink of " + std::to_string(m) + " components";
+    id.name = id.link_name + (c == 0 ? "" : " (by HOMFLY-PT)") + ": " + link_summary(id);
+    return;
+  }
+  if (inv.simplified_pieces > 1) {  // Regina's simplification separated it: split, outside the table
+    id.name = "split link, not in the table (which holds non-split links " + table_range + "): " + link_summary(id);
+    return;
+  }
+  std::vector<std::string> mine;
+  for (const auto& k : id.components) mine.push_back(knot_type_up_to_mirror(k));
+  std::vector<int> abs_lk;
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j) abs_lk.push_back(std::abs(inv.linking[i][j]));
+  std::sort(abs_lk.begin(), abs_lk.end());
+  for (const LinkMatch& match : links.with_key(inv.fingerprint)) {
+    const LinkTableEntry& e = *match.entry;
+    if (e.components != m || e.abs_linking != abs_lk || !same_knot_types(e.component_knots, mine)) continue;
+    const Chirality ch = match.as_table && match.mirror ? Chirality::kUnknown
+                         : match.mirror                 ? Chirality::kMirror
+                                                        : Chirality::kAsTable;
+    id.link_candidates.push_back({&e, ch, {}});
+  }
+  const std::size_t table_candidates = id.link_candidates.size();
+  if (table_candidates == 1 && c <= links.max_crossings()) {
+    // Proven unless a split or composite link (outside the table) has the same invariants.
+    LinkPieceSearch search{link_pieces(index, links), mine, abs_lk, 4, {}};
+    std::vector<const LinkPiece*> path;
+    std::uint64_t rest = inv.fingerprint;
+    for (int splits = 0; splits < m; ++splits) {
+      search.search(rest, c, 0, splits, path);
+      rest = modp::mul(rest, search.pieces.delta_inverse);
+    }
+    for (auto& other : search.found) id.link_candidates.push_back({nullptr, Chirality::kUnknown, std::move(other)});
+    id.proven = search.found.empty();
+  }
+  if (table_candidates == 0) {
+    id.name = "not in the table (" + table_range + ")" +
+              (c > links.max_crossings() ? ", " + std::to_string(c) + " crossings after simplification" : "") +
+              ": " + link_summary(id);
+    return;
+  }
+  if (id.link_candidates.size() == 1) {
+    const LinkCandidate& only = id.link_candidates.front();
+    id.link_name = only.entry->alias;
+    id.name = only.text() + (only.entry->alias.empty() ? "" : " (" + only.entry->alias + ")");
+    return;
+  }
+  id.name = "one of:";
+  for (std::size_t i = 0; i < id.link_candidates.size(); ++i)
+    id.name += (i ? ", " : " ") + id.link_candidates[i].text();
 }
 
 }  // namespace
@@ -252,21 +443,7 @@ KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOp
     id.components.push_back(identify_diagram(component_diagram(diagram, i), sub));
     id.components.back().frame = id.frame;
   }
-  id.link_name = known_link_name(id.invariants);
-  if (id.invariants.simplified_crossings == 0)
-    id.link_name = "unlink of " + std::to_string(diagram.component_count()) + " components";
-  id.proven = false;
-  std::string s = id.link_name.empty() ? "link of " + std::to_string(diagram.component_count()) +
-                                             " components"
-                                       : id.link_name;
-  s += ": ";
-  for (std::size_t i = 0; i < id.components.size(); ++i) s += (i ? ", " : "") + id.components[i].name;
-  const auto lk = id.invariants.linking;
-  s += "; linking numbers";
-  for (std::size_t i = 0; i < lk.size(); ++i)
-    for (std::size_t j = i + 1; j < lk.size(); ++j)
-      s += " lk(" + std::to_string(i) + "," + std::to_string(j) + ")=" + std::to_string(lk[i][j]);
-  id.name = s;
+  identify_link(id, index, options.links ? *options.links : LinkTable::shipped());
   return id;
 }
 

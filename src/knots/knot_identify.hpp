@@ -1,6 +1,7 @@
 // Names the knot or link of a curve: unknot, prime knots of the census (Rolfsen and DT names) with
-// chirality, composite knots from HOMFLY-PT factorisations, links by their components and linking
-// numbers. When the invariants cannot decide, every candidate is listed.
+// chirality, composite knots from HOMFLY-PT factorisations, links from Thistlethwaite's table (to
+// 11 crossings) with their components and linking numbers. When the invariants cannot decide,
+// every candidate is listed.
 #pragma once
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "knots/knot_diagram.hpp"
 #include "knots/knot_index.hpp"
 #include "knots/knot_invariants.hpp"
+#include "knots/link_table.hpp"
 #include "shape/curve.hpp"
 
 namespace s4d {
@@ -30,6 +32,15 @@ struct KnotFactor {
 using KnotFactorisation = std::vector<KnotFactor>;
 std::string factorisation_text(const KnotFactorisation& f);  // "3_1 # 3_1 mirror"
 
+// One answer for a link: a table link as drawn, its mirror image, or either (kUnknown: HOMFLY-PT
+// cannot tell them apart); or, with no entry, a split or composite link the invariants also allow.
+struct LinkCandidate {
+  const LinkTableEntry* entry = nullptr;
+  Chirality chirality = Chirality::kAsTable;
+  std::string other;  // without an entry: "Hopf link # 3_1", "split: L2a1 and unknot"
+  std::string text() const;  // "L6a4", "L4a1 mirror", or `other`
+};
+
 enum class KnotKind { kUnknot, kPrime, kComposite, kLink, kUnknown };
 const char* kind_name(KnotKind k);  // "unknot", "prime", "composite", "link", "unknown"
 
@@ -43,6 +54,7 @@ struct KnotIdentification {
   Frame<3> frame;         // the view actually used (after any generic perturbation)
   std::vector<KnotIdentification> components;  // links: each component on its own
   std::string link_name;  // links: a well-known name when the link is one ("Hopf link"), else ""
+  std::vector<LinkCandidate> link_candidates;  // links: every answer the invariants allow
   // The name as the CLI and the GUI show it: "3_1 (DT 3a_1)", with "  [not proven]" when the
   // invariants leave other answers open.
   std::string headline() const { return name + (proven ? "" : "  [not proven]"); }
@@ -53,6 +65,7 @@ struct IdentifyOptions {
   bool choose_view = true;    // also try the curve's principal axes; keep the view with fewest crossings
   bool prove_unknot = false;  // use Regina's solid-torus recognition when only invariants say unknot
   const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
+  const LinkTable* links = nullptr;  // nullptr: LinkTable::shipped()
 };
 
 // Throws Error for invalid curves (see diagram_from_curve).
@@ -61,6 +74,10 @@ KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOp
 
 // The diagram of one component of a link on its own (crossings with other components dropped).
 KnotDiagram component_diagram(const KnotDiagram& diagram, int component);
+
+// A knot's type up to mirror image as the link table lists its links' components: "unknot",
+// "3_1", "3_1#4_1" (factors sorted); "?" unless the identification is proven.
+std::string knot_type_up_to_mirror(const KnotIdentification& knot);
 
 // The paper's user-study question "are these the same knot?".
 enum class Sameness { kSame, kMirror, kDifferent, kUndecided };

@@ -50,8 +50,22 @@ std::string chirality_sentence(const KnotFactor& f) {
   return {};
 }
 
+std::string link_chirality_sentence(const LinkCandidate& l) {
+  const std::string n = l.entry->name;
+  switch (l.chirality) {
+    case Chirality::kAsTable: return n + " as drawn in KnotInfo's link table, not its mirror image";
+    case Chirality::kMirror: return "the mirror image of " + n + " as drawn in KnotInfo's link table";
+    default:
+      return "unknown: HOMFLY-PT (in every orientation) cannot tell " + n + " from its mirror image";
+  }
+}
+
 std::string chirality_text(const KnotIdentification& id) {
   if (id.kind == KnotKind::kUnknot) return id.proven ? "the unknot is amphichiral" : "";
+  if (id.kind == KnotKind::kLink)
+    return id.link_candidates.size() == 1 && id.link_candidates[0].entry
+               ? link_chirality_sentence(id.link_candidates[0])
+               : "";
   if (id.kind == KnotKind::kLink || id.candidates.size() != 1) return "";
   const auto& f = id.candidates[0];
   if (f.size() == 1) return chirality_sentence(f[0]);
@@ -224,6 +238,15 @@ KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view,
     if (id.proven)
       info.decided_by.push_back("a simplified diagram of " + std::to_string(v.simplified_crossings) +
                                 " crossings, so the census holds every knot it could be");
+  } else if (id.kind == KnotKind::kLink && !id.link_candidates.empty()) {
+    const LinkTable& links = LinkTable::shipped();
+    info.decided_by.push_back(
+        "the HOMFLY-PT polynomial in every orientation, the components' knot types and linking numbers, matched "
+        "against Thistlethwaite's link table to " + std::to_string(links.max_crossings()) + " crossings");
+    if (id.proven)
+      info.decided_by.push_back("a connected simplified diagram of " + std::to_string(v.simplified_crossings) +
+                                " crossings, and no split or composite link with the same HOMFLY-PT, so the "
+                                "table holds every link it could be");
   }
   if (options.refine && id.kind != KnotKind::kLink &&
       (id.candidates.size() > 1 || (id.kind == KnotKind::kUnknot && !id.proven)))
@@ -234,6 +257,7 @@ KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view,
   info.chirality = chirality_text(id);
   if (id.kind == KnotKind::kUnknot) info.candidates = {"unknot"};
   for (const auto& f : id.candidates) info.candidates.push_back(factorisation_text(f));
+  for (const auto& l : id.link_candidates) info.candidates.push_back(l.text());
   info.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return info;

@@ -78,6 +78,20 @@ Laurent2 from_regina(const regina::Laurent2<regina::Integer>& p, long bound) {
 
 std::string in_t_or_sqrt_t(const Laurent1& f) { return f.str_half("t"); }
 
+// Connected pieces of a diagram's shadow: components joined where they cross.
+int diagram_pieces(const KnotDiagram& d) {
+  std::vector<int> parent(d.components.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (const auto& c : d.crossings) parent[root(d.passages[c.over].component)] = root(d.passages[c.under].component);
+  int pieces = 0;
+  for (std::size_t i = 0; i < parent.size(); ++i) pieces += root(static_cast<int>(i)) == static_cast<int>(i);
+  return pieces;
+}
+
 }  // namespace
 
 std::string KnotInvariants::jones_text() const { return in_t_or_sqrt_t(jones); }
@@ -96,6 +110,7 @@ KnotInvariants compute_invariants(const KnotDiagram& diagram) {
   inv.simplified_crossings = static_cast<int>(link.size());
   inv.simplified_alternating = link.isAlternating();
   if (link.size() > 0) inv.simplified_pd = link.pd();
+  inv.simplified_pieces = diagram_pieces(diagram_from_regina(link));
 
   const long bound = static_cast<long>(link.size() + link.countComponents()) + 1;
   inv.homfly = from_regina(link.homflyAZ(), bound);

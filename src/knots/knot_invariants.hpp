@@ -15,6 +15,7 @@ struct KnotInvariants {
   int diagram_crossings = 0;     // crossings of the diagram analysed
   int simplified_crossings = 0;  // after Regina's simplification: crossing number <= this
   bool simplified_alternating = false;  // a reduced alternating diagram has minimal crossings
+  int simplified_pieces = 1;     // connected pieces of the simplified diagram (more: a split link)
   int writhe = 0;                // of the diagram analysed (not a knot invariant)
   std::vector<std::vector<int>> linking;  // components × components
   Laurent2 homfly;               // HOMFLY-PT in (alpha, z): alpha P+ - alpha^-1 P- = z P0, P(O) = 1

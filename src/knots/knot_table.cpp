@@ -1,5 +1,6 @@
 // Resolving table names to diagrams and curves: Rolfsen knots from their braid words, the other
-// census knots from the minimal diagram whose signature the index keeps, torus knots on a torus.
+// census knots from the minimal diagram whose signature the index keeps, torus knots on a torus,
+// links from the link table's PD codes.
 #include "knots/knot_table.hpp"
 
 #include <algorithm>
@@ -17,25 +18,6 @@
 namespace s4d {
 
 namespace {
-
-// [SECTION] the named links
-
-struct NamedLink {
-  const char* name;
-  const char* table_name;  // Thistlethwaite's
-  int strands;
-  std::vector<int> word;
-};
-
-const std::vector<NamedLink>& named_links() {
-  static const std::vector<NamedLink> links = {
-      {"Hopf link", "L2a1", 2, {1, 1}},
-      {"Solomon link", "L4a1", 2, {1, 1, 1, 1}},
-      {"Whitehead link", "L5a1", 3, {1, 1, -2, 1, -2}},
-      {"Borromean rings", "L6a4", 3, {1, -2, 1, -2, 1, -2}},
-  };
-  return links;
-}
 
 const std::vector<BraidWord>& rolfsen_braids() {
   static const std::vector<BraidWord> table =
@@ -95,29 +77,39 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+// The crossing number a name starts with: "8_2" -> 8, "L6a4" -> 6; -1 if none.
 int leading_number(const std::string& s) {
   int n = 0;
-  std::size_t i = 0;
+  std::size_t i = s.size() > 1 && (s[0] == 'L' || s[0] == 'l') ? 1 : 0;
   while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) n = 10 * n + (s[i++] - '0');
-  return i ? n : -1;
+  return i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1])) ? n : -1;
+}
+
+KnotDiagram link_diagram(const LinkTableEntry& e) {
+  try {
+    return diagram_from_regina(regina::Link::fromPD(e.pd));
+  } catch (const regina::InvalidArgument& ex) {
+    throw Error("the link table's PD code of " + e.name + " is unreadable: " + ex.what());
+  }
 }
 
 }  // namespace
 
 // [SECTION] names
 
-std::vector<TableName> knot_table_names(const KnotIndex* index_in) {
+std::vector<TableName> knot_table_names(const KnotIndex* index_in, const LinkTable* links_in) {
   const KnotIndex& index = index_in ? *index_in : KnotIndex::shipped();
-  std::vector<TableName> out{{"unknot", 0, "unknot"}};
+  const LinkTable& links = links_in ? *links_in : LinkTable::shipped();
+  std::vector<TableName> out{{"unknot", 0, "unknot", ""}};
   for (const auto& e : index.entries()) {
     const char* source = !e.rolfsen_name.empty() ? "Rolfsen" : !e.dt_name.empty() ? "DT" : "census";
-    out.push_back({e.display_name(), e.crossings, source});
+    out.push_back({e.display_name(), e.crossings, source, ""});
   }
   for (int p = 2; p <= index.max_crossings(); ++p)
     for (int q = p + 1; q * (p - 1) <= index.max_crossings(); ++q)
       if (std::gcd(p, q) == 1)
-        out.push_back({"T(" + std::to_string(p) + "," + std::to_string(q) + ")", q * (p - 1), "torus"});
-  for (const auto& l : named_links()) out.push_back({l.name, static_cast<int>(l.word.size()), "link"});
+        out.push_back({"T(" + std::to_string(p) + "," + std::to_string(q) + ")", q * (p - 1), "torus", ""});
+  for (const auto& l : links.entries()) out.push_back({l.name, l.crossings, "link", l.alias});
   // Rolfsen and DT names sort by crossings, then by their number ("8_2" before "8_10").
   auto number = [](const std::string& s) {
     const auto u = s.rfind('_');
@@ -138,13 +130,17 @@ std::vector<TableName> knot_table_names(const KnotIndex* index_in) {
 }
 
 std::vector<std::string> close_table_names(const std::string& name, std::size_t count,
-                                           const KnotIndex* index) {
-  const std::string want = lower(canonical_knot_name(name));
+                                           const KnotIndex* index, const LinkTable* links) {
+  const std::string as_link = canonical_link_name(name);
+  const std::string want = lower(as_link.empty() ? canonical_knot_name(name) : as_link);
   const int n = leading_number(want);
+  const bool link = !as_link.empty() || want.find("link") != std::string::npos;
   std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const auto& t : knot_table_names(index)) {
+  for (const auto& t : knot_table_names(index, links)) {
     std::size_t d = edit_distance(want, lower(t.name));
+    if (!t.alias.empty()) d = std::min(d, edit_distance(want, lower(t.alias)));
     if (n >= 0 && t.crossings != n) d += 2;  // same crossing number first
+    if (link != (t.source == "link")) d += 1;  // then links for a link's name, knots for a knot's
     scored.emplace_back(d, t.name);
   }
   std::stable_sort(scored.begin(), scored.end(),
@@ -156,10 +152,11 @@ std::vector<std::string> close_table_names(const std::string& name, std::size_t 
 
 // [SECTION] resolving
 
-TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
+TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in, const LinkTable* links_in) {
   const KnotIndex& index = index_in ? *index_in : KnotIndex::shipped();
+  const LinkTable& links = links_in ? *links_in : LinkTable::shipped();
   std::string name = trim(name_in);
-  if (name.empty()) throw Error("no knot name given (try 3_1, 11n_34, T(2,5) or Hopf link)");
+  if (name.empty()) throw Error("no knot name given (try 3_1, 11n_34, T(2,5), L6a4 or Hopf link)");
   bool mirror = false;
   for (const std::string suffix : {" mirror", "*"})
     if (name.size() > suffix.size() && lower(name).ends_with(suffix)) {
@@ -171,11 +168,7 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
   auto finish = [&](TableKnot k, bool mirrored) {
     k.mirror = mirrored;
     if (mirrored) {
-      for (auto& c : k.diagram.crossings) {
-        c.sign = -c.sign;
-        std::swap(c.over, c.under);
-      }
-      for (auto& p : k.diagram.passages) p.over = !p.over;
+      k.diagram = k.diagram.mirrored();
       k.name += " mirror";
     }
     return k;
@@ -197,13 +190,18 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
     t.diagram.components.resize(1);
     return t;
   }
-  for (const auto& l : named_links())
-    if (lower(name) == lower(l.name) || name == l.table_name) {
-      t.name = l.name;
-      t.source = "link";
-      t.diagram = braid_diagram(l.strands, l.word);
-      return finish(std::move(t), mirror);
-    }
+  const LinkTableEntry* l = links.find_name(name);
+  if (!l && !mirror && name.size() > 2 && name[0] == 'm' && (name[1] == 'L' || name[1] == 'l')) {
+    l = links.find_name(name.substr(1));
+    mirror = l != nullptr;
+  }
+  if (l) {
+    t.name = l->name;
+    t.source = "link";
+    t.link = l;
+    t.diagram = link_diagram(*l);
+    return finish(std::move(t), mirror);
+  }
   const KnotTableEntry* e = index.find_name(name);
   if (!e && !mirror && name.size() > 1 && name[0] == 'm' &&
       std::isdigit(static_cast<unsigned char>(name[1]))) {
@@ -211,8 +209,8 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
     mirror = e != nullptr;
   }
   if (!e) {
-    std::string msg = "no knot called '" + trim(name_in) + "' in the table; close matches:";
-    const auto close = close_table_names(name, 5, &index);
+    std::string msg = "no knot or link called '" + trim(name_in) + "' in the table; close matches:";
+    const auto close = close_table_names(name, 5, &index, &links);
     for (std::size_t i = 0; i < close.size(); ++i) msg += (i ? ", " : " ") + close[i];
     throw Error(msg);
   }
@@ -237,8 +235,9 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in) {
   return finish(std::move(t), mirror);
 }
 
-Curve<3> make_table_knot(const std::string& name, const DiagramEmbedding& options, const KnotIndex* index) {
-  const TableKnot t = table_knot(name, index);
+Curve<3> make_table_knot(const std::string& name, const DiagramEmbedding& options, const KnotIndex* index,
+                         const LinkTable* links) {
+  const TableKnot t = table_knot(name, index, links);
   Curve<3> curve;
   const int crossings = t.diagram.crossing_count();
   const int points = std::max(60, options.points_per_crossing * crossings);
@@ -250,29 +249,17 @@ Curve<3> make_table_knot(const std::string& name, const DiagramEmbedding& option
     // shape/torus_knot(p, q) winds the other way round from the positive braid (sigma_1 ...
     // sigma_{p-1})^q that T(p,q) means here (and in KnotInfo): positive crossings.
     curve = torus_knot(p, -q, std::max(points / std::gcd(p, q), 24));
-  } else if (t.source == "Rolfsen" || t.source == "link") {
+  } else if (t.source == "Rolfsen") {
     // Braid closures are clean pictures of their braid words; relaxation rounds them.
     int strands = 0;
     std::vector<int> word;
-    if (t.source == "link") {
-      for (const auto& l : named_links())
-        if (t.name.starts_with(l.name)) strands = l.strands, word = l.word;
-    } else {
-      for (const auto& b : rolfsen_braids())
-        if (b.name == t.entry->rolfsen_name) strands = b.strands, word = b.word;
-    }
+    for (const auto& b : rolfsen_braids())
+      if (b.name == t.entry->rolfsen_name) strands = b.strands, word = b.word;
     curve = resample_curve_to_count(braid_closure(strands, word, 9), points);
     if (options.relax_iterations > 0) curve = relax(curve, options.relax_iterations);
   } else {
-    KnotDiagram d = t.diagram;
-    if (t.mirror) {  // draw the table's own diagram, mirror the curve below
-      for (auto& c : d.crossings) {
-        c.sign = -c.sign;
-        std::swap(c.over, c.under);
-      }
-      for (auto& ps : d.passages) ps.over = !ps.over;
-    }
-    curve = curve_from_diagram(d, options);
+    // Draw the table's own diagram (census knots, links); a mirror image is mirrored below.
+    curve = curve_from_diagram(t.mirror ? t.diagram.mirrored() : t.diagram, options);
   }
   if (t.mirror)
     for (auto& pl : curve.components)

@@ -645,6 +645,23 @@ TEST(GuiSmoke, TheUnknottingExerciseNumbersTheCrossingsAndJudgesARightClick) {
   }
 }
 
+// Create > Knot from the table with a link: the dialog takes the typed name at once, Create draws
+// L6a4 beside the trefoil, and the Knot panel names the new curve from the link table.
+TEST(GuiSmoke, ALinkFromTheTableIsNamedInTheKnotPanel) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotRun run{std::filesystem::temp_directory_path() / "s4d_gui_link_table"};
+  const auto start = run("start", {"3 move 100 700"});
+  const auto open = click(5, start["knot_panels"]["buttons"]["Knot from the table..."]) +
+                    std::vector<std::string>{"12 type L6a4", "14 wait"};
+  const auto opened = run("opened", open);
+  ASSERT_TRUE(opened["knot_panels"]["buttons"].contains("Create")) << opened["knot_panels"];
+  const auto made = run("made", open + click(20, opened["knot_panels"]["buttons"]["Create"]) +
+                                    std::vector<std::string>{"26 wait", "30 wait", "34 wait", "40 wait"});
+  EXPECT_EQ(made["objects"].get<int>(), 2) << made["status"];
+  EXPECT_EQ(made["knot_panel_name"].get<std::string>(), "L6a4 (Borromean rings)") << made["status"];
+}
+
 // Are these the same knot?: a pair from the table side by side, their names hidden until the
 // user answers; the answer is judged right or wrong with the invariants' reason.
 TEST(GuiSmoke, TheSameKnotExerciseJudgesTheUsersAnswer) {

@@ -91,8 +91,11 @@ TEST(KnotInfo, LinkingNumbers) {
   EXPECT_EQ(knot_info(make_table_knot("Hopf link mirror")).linking[0][1], -1);
   const KnotInfo white = knot_info(make_table_knot("Whitehead link"));
   EXPECT_EQ(white.linking[0][1], 0);
-  EXPECT_FALSE(white.proven);  // links are described, never claimed proven
-  EXPECT_NE(white.name.find("lk(0,1)=0"), std::string::npos) << white.name;
+  // Named from the link table; proven since no other link of the table (nor a split or composite
+  // one) has its invariants.
+  EXPECT_TRUE(white.proven);
+  EXPECT_EQ(white.name, "L5a1 (Whitehead link)");
+  EXPECT_EQ(white.chirality.find("L5a1"), 0u) << white.chirality;
 }
 
 TEST(KnotInfo, TwelveCrossingKnotsHaveDTNames) {
