@@ -190,16 +190,11 @@ void Session::objects_changed() {
   auto state = std::make_unique<WorldState>();
   state->play = playing;
   state->time = time;  // the clock goes on
+  // Every simulated body's points: surfaces', or curves' when the knots are the bodies.
+  state->positions = body_positions(doc_.scene, first_, dim_);
   for (std::size_t o = 0; o < doc_.scene.objects.size(); ++o) {
     if (first_[o] < 0) continue;
     const SceneObject& obj = doc_.scene.objects[o];
-    std::visit([&](const auto& sh) {
-      using T = std::decay_t<decltype(sh)>;
-      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-        for (const auto& p : sh.vertices)
-          for (int k = 0; k < dim_; ++k) state->positions.push_back(k < T::kDim ? p[k] : 0.0);
-      }
-    }, obj.shape);
     const auto it = kept.find(obj.name);
     const bool same = it != kept.end() && it->second.count == count_[o] &&
                       it->second.velocities.size() == static_cast<std::size_t>(count_[o] * dim_);

@@ -126,5 +126,32 @@ TEST(Session, TheRatesStayTrueAcrossAResetAndAnAddedBody) {
   EXPECT_GT(s.snapshot()->status.sim_time, 1.0) << "the added body's state kept the clock";
 }
 
+// Knots are the bodies when a scene has no surface: deleting one (the Scene panel's "x") keeps
+// the other's state, as for surfaces, instead of refusing a state without the curves' points.
+TEST(Session, DeletingAKnotKeepsTheOtherKnotsState) {
+  Session s;
+  s.open(load_document("torus-knot:p=2,q=3,n=120"), headless());
+  SceneObject second;
+  second.name = "figure eight";
+  second.placement.offset = Vec4(12, 0, 0, 0);
+  second.shape = placed(generate("figure-eight", {}), second.placement);
+  s.add_object(second, "create figure eight");
+  ASSERT_EQ(s.dimension(), 3);
+  ticks(s, 1);  // the added body's state lands
+  s.send(live_command(LiveCode::kPin, s.first_vertex(1) + 3));
+  ASSERT_EQ(ticks(s, 50).status.pinned, 1);
+  const std::vector<double> before = s.snapshot()->points;
+  const int kept0 = s.first_vertex(1);
+  s.record("delete the trefoil");
+  s.scene().objects.erase(s.scene().objects.begin());
+  s.objects_changed();
+  const HapticSnapshot& after = ticks(s, 1);
+  EXPECT_STREQ(after.status.message, "") << "no state was refused";
+  ASSERT_EQ(s.first_vertex(0), 0);
+  EXPECT_EQ(after.status.pinned, 1) << "the figure eight's pin is kept";
+  EXPECT_EQ(after.flags[3], 1);
+  EXPECT_NEAR(after.points[3 * 3], before[static_cast<std::size_t>(kept0 + 3) * 3], 1e-6) << "where it was";
+}
+
 }  // namespace
 }  // namespace s4d
