@@ -49,7 +49,12 @@ struct Totals {
   long long undos = 0, redos = 0, autosaves = 0, reconnects = 0, disconnects = 0, rollbacks = 0, freezes = 0;
   long long clamped = 0, nonfinite_requests = 0, nonfinite_to_device = 0, nonfinite_in_files = 0;
   long long checks = 0, pass_throughs = 0, knot_strokes = 0, crossing_changes = 0;
-  double worst_period_us = 0;
+  // The longest loop period, and what tells its cause: the same loop's longest tick of its own
+  // work (a stall inside a tick) and latest wake-up after a deadline (the CPU withheld).
+  double worst_period_us = 0, worst_period_work_us = 0, worst_period_lateness_us = 0;
+  std::string worst_period_round;
+  double worst_work_us = 0;  // the longest tick's own work over every loop
+  long long loops = 0, realtime_loops = 0;  // loops run, and those granted SCHED_FIFO
   std::vector<std::string> problems;
 };
 
@@ -114,8 +119,12 @@ struct LoopCounts {
   const HapticLoop* loop = nullptr;
   long long steps = 0, rollbacks = 0, freezes = 0, disconnects = 0, reconnects = 0, clamped = 0, nonfinite = 0;
 
-  void see(const HapticLoop* now, const HapticSnapshot& snap, Totals& t) {
-    if (now != loop) fold(t);
+  void see(const HapticLoop* now, const HapticSnapshot& snap, Totals& t, const std::string& round) {
+    if (now != loop) {
+      fold(t);
+      ++t.loops;
+      t.realtime_loops += snap.realtime ? 1 : 0;
+    }
     loop = now;
     steps = snap.status.sim_steps;
     rollbacks = snap.status.rollbacks;
@@ -124,7 +133,13 @@ struct LoopCounts {
     reconnects = static_cast<long long>(snap.reconnects);
     clamped = static_cast<long long>(snap.safety.clamped);
     nonfinite = static_cast<long long>(snap.safety.nonfinite);
-    t.worst_period_us = std::max(t.worst_period_us, snap.period.max_us);
+    if (snap.period.max_us > t.worst_period_us) {
+      t.worst_period_us = snap.period.max_us;
+      t.worst_period_work_us = snap.work.max_us;
+      t.worst_period_lateness_us = snap.period.worst_lateness_us;
+      t.worst_period_round = round;
+    }
+    t.worst_work_us = std::max(t.worst_work_us, snap.work.max_us);
   }
   void fold(Totals& t) {
     t.steps += steps;
@@ -169,7 +184,7 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
     s.refresh();
     const HapticSnapshot* snap = s.snapshot();
     if (!snap) continue;
-    counts.see(s.loop(), *snap, t);
+    counts.see(s.loop(), *snap, t, scenario.stem().string());
     if (!snap->force_output.allFinite()) ++t.nonfinite_to_device;
     const auto now = Clock::now();
     const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
@@ -245,7 +260,7 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
     }
   }
   s.refresh();
-  if (const HapticSnapshot* snap = s.snapshot()) counts.see(s.loop(), *snap, t);
+  if (const HapticSnapshot* snap = s.snapshot()) counts.see(s.loop(), *snap, t, scenario.stem().string());
   counts.fold(t);
   ++t.rounds;
 }
@@ -326,7 +341,12 @@ void soak(const SoakArgs& a) {
                              {"crossing_changes", t.crossing_changes}, {"undos", t.undos}, {"redos", t.redos},
                              {"autosaves", t.autosaves}, {"disconnects", t.disconnects}, {"reconnects", t.reconnects},
                              {"rollbacks", t.rollbacks}, {"global_freezes", t.freezes},
-                             {"worst_loop_period_us", t.worst_period_us}, {"forces_clamped", t.clamped},
+                             {"worst_loop_period_us", t.worst_period_us},
+                             {"worst_loop_period", {{"round", t.worst_period_round},
+                                                    {"longest_tick_work_us", t.worst_period_work_us},
+                                                    {"latest_wake_up_us", t.worst_period_lateness_us}}},
+                             {"longest_tick_work_us", t.worst_work_us}, {"loops", t.loops},
+                             {"realtime_loops", t.realtime_loops}, {"forces_clamped", t.clamped},
                              {"nonfinite_requests_stopped", t.nonfinite_requests},
                              {"nonfinite_to_device", t.nonfinite_to_device}, {"nonfinite_in_files", t.nonfinite_in_files},
                              {"independent_checks", t.checks}, {"pass_throughs", t.pass_throughs}, {"problems", t.problems}};
@@ -338,8 +358,13 @@ void soak(const SoakArgs& a) {
                 t.grabs, t.turns, t.pins, t.explorations, t.ribbons, t.ribbons_refused);
     std::printf("  knot strokes %lld, crossing changes %lld, undos %lld, redos %lld, autosaves %lld\n", t.knot_strokes,
                 t.crossing_changes, t.undos, t.redos, t.autosaves);
-    std::printf("  device: %lld disconnects, %lld recoveries; worst loop period %.0f us; forces clamped %lld\n",
-                t.disconnects, t.reconnects, t.worst_period_us, t.clamped);
+    std::printf("  device: %lld disconnects, %lld recoveries; forces clamped %lld\n", t.disconnects, t.reconnects,
+                t.clamped);
+    // Work near the period: a stall inside a tick; lateness near it: the CPU was withheld.
+    std::printf("  worst loop period %.0f us (%s; that loop's longest tick of work %.0f us, latest wake-up %.0f us "
+                "after its deadline); longest tick of work in any loop %.0f us; %lld of %lld loops real-time (SCHED_FIFO)\n",
+                t.worst_period_us, t.worst_period_round.empty() ? "no loop" : t.worst_period_round.c_str(),
+                t.worst_period_work_us, t.worst_period_lateness_us, t.worst_work_us, t.realtime_loops, t.loops);
     std::printf("  must be zero: pass-throughs %lld (in %lld independent checks), non-finite forces to the device %lld "
                 "(%lld non-finite requests stopped by the safety layer), non-finite values in files %lld\n",
                 t.pass_throughs, t.checks, t.nonfinite_to_device, t.nonfinite_requests, t.nonfinite_in_files);
