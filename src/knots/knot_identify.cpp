@@ -394,6 +394,24 @@ void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTab
                                                         : Chirality::kAsTable;
     id.link_candidates.push_back({&e, ch, {}});
   }
+  settle_link(id, index, links);
+}
+
+}  // namespace
+
+void settle_link(KnotIdentification& id, const KnotIndex& index, const LinkTable& links) {
+  const KnotInvariants& inv = id.invariants;
+  const int m = inv.components, c = inv.simplified_crossings;
+  const std::string table_range = "up to " + std::to_string(links.max_crossings()) + " crossings";
+  std::erase_if(id.link_candidates, [](const LinkCandidate& l) { return l.entry == nullptr; });  // found again below
+  id.proven = false;
+  id.link_name.clear();
+  std::vector<std::string> mine;
+  for (const auto& k : id.components) mine.push_back(knot_type_up_to_mirror(k));
+  std::vector<int> abs_lk;
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j) abs_lk.push_back(std::abs(inv.linking[i][j]));
+  std::sort(abs_lk.begin(), abs_lk.end());
   const std::size_t table_candidates = id.link_candidates.size();
   if (table_candidates == 1 && c <= links.max_crossings()) {
     // Proven unless a split or composite link (outside the table) has the same invariants.
@@ -423,8 +441,6 @@ void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTab
   for (std::size_t i = 0; i < id.link_candidates.size(); ++i)
     id.name += (i ? ", " : " ") + id.link_candidates[i].text();
 }
-
-}  // namespace
 
 KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOptions& options) {
   const KnotIndex& index = options.index ? *options.index : KnotIndex::shipped();

@@ -72,6 +72,11 @@ struct IdentifyOptions {
 KnotIdentification identify_knot(const Curve<3>& curve, const IdentifyOptions& options = {});
 KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOptions& options = {});
 
+// A link's name, and whether it is proven, from its table candidates as they stand (after further
+// invariants dropped some): one left within the table's crossings is proven unless a split or
+// composite link shares its invariants (those are listed as candidates then).
+void settle_link(KnotIdentification& id, const KnotIndex& index, const LinkTable& links);
+
 // The diagram of one component of a link on its own (crossings with other components dropped).
 KnotDiagram component_diagram(const KnotDiagram& diagram, int component);
 

@@ -85,6 +85,9 @@ int leading_number(const std::string& s) {
   return i > 0 && std::isdigit(static_cast<unsigned char>(s[i - 1])) ? n : -1;
 }
 
+
+}  // namespace
+
 KnotDiagram link_diagram(const LinkTableEntry& e) {
   try {
     return diagram_from_regina(regina::Link::fromPD(e.pd));
@@ -92,8 +95,6 @@ KnotDiagram link_diagram(const LinkTableEntry& e) {
     throw Error("the link table's PD code of " + e.name + " is unreadable: " + ex.what());
   }
 }
-
-}  // namespace
 
 // [SECTION] names
 

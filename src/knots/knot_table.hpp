@@ -42,6 +42,9 @@ struct TableKnot {
   KnotDiagram diagram;                    // combinatorial diagram (no geometry)
 };
 
+// The table's own diagram of a link (its PD code). Throws s4d::Error when the code is unreadable.
+KnotDiagram link_diagram(const LinkTableEntry& entry);
+
 // Accepts any spelling the index knows ("12a_803", "K12a803", "13nh_517"), "T(p,q)" (negative q
 // is the mirror), "unknot", the table's links by Thistlethwaite's name in KnotInfo's spellings
 // ("L6a4", "l6a4", "L6a_4", orientation suffixes "L6a4{1,0}" dropped) or a common name ("Hopf

@@ -225,6 +225,44 @@ TEST(LinkTable, EveryTableLinkIsNamedBackFromItsDiagram) {
             << " with a split or composite alternative\n";
 }
 
+// Where HOMFLY-PT, the components and the linking numbers leave table links together (mostly
+// mutants), covers of the link group tell them apart: as the Knot panel refines a name.
+TEST(LinkTable, CoversOfTheLinkGroupTellApartWhatHomflyCannot) {
+  KnotInfoOptions options;
+  auto refined = [&](const std::string& name, std::vector<std::string>& decided) {
+    KnotIdentification id = identify_diagram(table_knot(name).diagram);
+    std::vector<std::string> used;
+    refine_identification(id, options, used, decided);
+    EXPECT_EQ(used.size(), 1u) << "the covers were tried";
+    std::set<std::string> table;
+    for (const auto& c : id.link_candidates)
+      if (c.entry) table.insert(c.entry->name);
+    return std::make_pair(id, table);
+  };
+  std::vector<std::string> decided;
+  // L11a151 and L11a225 share every invariant of the table but covers of index 5.
+  for (const char* pair : {"L11a151", "L11a225"}) {
+    SCOPED_TRACE(pair);
+    decided.clear();
+    ASSERT_EQ(identify_diagram(table_knot(pair).diagram).link_candidates.size(), 2u);
+    const auto [id, table] = refined(pair, decided);
+    EXPECT_EQ(table, std::set<std::string>{pair}) << id.name;
+    EXPECT_EQ(id.name.rfind(pair, 0), 0u) << id.name;
+    EXPECT_EQ(id.proven, id.link_candidates.size() == 1) << "proven when no composite link shares them";
+    ASSERT_FALSE(decided.empty());
+    EXPECT_NE(decided[0].find("covers of the link group"), std::string::npos);
+  }
+  // L10a59 and the mirror image of L10a63: covers drop L10a63; a composite link (Hopf link # a
+  // knot) with the same invariants stays possible, so the name stays unproven.
+  decided.clear();
+  const auto [l10a59, table] = refined("L10a59", decided);
+  EXPECT_EQ(table, std::set<std::string>{"L10a59"});
+  EXPECT_FALSE(l10a59.proven);
+  // L11n432 and L11n437: no cover of index up to 5 tells them apart; both stay.
+  decided.clear();
+  EXPECT_EQ(refined("L11n432", decided).second, (std::set<std::string>{"L11n432", "L11n437"}));
+}
+
 TEST(LinkTable, MirrorImagesAreNamedAsMirrors) {
   int chiral = 0;
   for (const char* name : {"L4a1", "L6a1", "L7n1", "L8a14", "L9n27", "L10a118", "L11a1", "L11n459"}) {
