@@ -1,0 +1,376 @@
+// The simulation panel (play, physics, the hand, status), the scenario banner, the ribbon and
+// history panels, the restore dialog and the generator dialog.
+#include "app/panels.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include "app/panel_settings.hpp"
+#include "interact/live_simulation.hpp"
+#include "io/object_file.hpp"
+#include "scenario/world_builder.hpp"
+
+namespace s4d {
+
+using panel_detail::record_tool_setting;
+
+namespace {
+
+constexpr const char* kIntegratorNames[] = {"symplectic-euler", "paper-euler"};
+
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f s", s);
+  return b;
+}
+
+}  // namespace
+
+// [SECTION] Simulation panel
+void Panels::simulation_panel(GuiModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(340, 520), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Simulation");
+  Session& session = model.session;
+  if (!session.simulating()) {
+    if (!session.physics_error().empty()) {
+      ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "not simulated:");
+      ImGui::TextWrapped("%s", session.physics_error().c_str());
+      ImGui::TextDisabled("the scene stays viewable");
+    } else {
+      ImGui::TextWrapped("nothing to simulate: sketch a knot (K), or open or create an object");
+    }
+    ImGui::End();
+    return;
+  }
+  const HapticSnapshot* snap = session.snapshot();
+  const SceneStatus st = snap ? snap->status : SceneStatus{};
+  if (ImGui::Button(st.playing ? "Pause" : "Play")) session.send(live_command(st.playing ? LiveCode::kPause : LiveCode::kPlay));
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) session.send(live_command(LiveCode::kStepOnce));
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) {
+    session.record("reset the simulation");
+    session.send(live_command(LiveCode::kReset));
+  }
+  if (session.scenario()) {
+    ImGui::SameLine();
+    if (!st.script_running) {
+      if (ImGui::Button("Play script")) session.send(live_command(LiveCode::kPlayScript));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("from the start, the scenario's scripted hand does it (as shadow4d run does)");
+    } else if (ImGui::Button("Stop script")) {
+      session.send(live_command(LiveCode::kStopScript));
+    }
+  }
+  float scale_before = model.time_scale;
+  if (ImGui::SliderFloat("time scale", &model.time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
+    session.send(live_time_scale(model.time_scale));
+  record_tool_setting(model, "change the time scale", [&] { std::swap(model.time_scale, scale_before); });
+  if (curves_are_bodies(model.scene())) {
+    if (ImGui::Button(st.relaxing ? "Stop relaxing (L)" : "Relax (L)")) toggle_relax(model);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the knot energy (repulsion, even spacing, bending) pulls the knot towards a round,\n"
+                        "even shape, live, until stopped; collision avoidance keeps every strand from passing\n"
+                        "through another, so the knot stays the same (also: shadow4d knot relax CURVE --out OUT)");
+    ImGui::SameLine();
+    ImGui::TextDisabled("drag a strand: an isotopy (Alt: along the depth)");
+  }
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Physics (applied live)");
+  PhysicsSettings& p = model.scene().physics;
+  const PhysicsSettings before = p;
+  bool changed = false, released = false;
+  // One change of a setting (a whole slider drag) is one undoable step, with the value before it.
+  auto record_setting = [&] {
+    const PhysicsSettings now = p;
+    p = before;
+    session.record("change the physics");
+    p = now;
+  };
+  auto edited = [&] {
+    if (ImGui::IsItemActivated()) record_setting();
+    changed = changed || ImGui::IsItemEdited();
+    released = released || ImGui::IsItemDeactivatedAfterEdit();
+  };
+  bool gravity_on = p.gravity.norm() > 0;
+  static Vec4 gravity_saved(0, -9.81, 0, 0);
+  if (ImGui::Checkbox("gravity", &gravity_on)) {
+    record_setting();
+    if (gravity_on) p.gravity = gravity_saved;
+    else {
+      gravity_saved = p.gravity;
+      p.gravity.setZero();
+    }
+    released = true;
+  }
+  if (gravity_on) {
+    float g[4] = {static_cast<float>(p.gravity[0]), static_cast<float>(p.gravity[1]), static_cast<float>(p.gravity[2]),
+                  static_cast<float>(p.gravity[3])};
+    if (ImGui::DragFloat4("g (x y z w)", g, 0.05f, -50.0f, 50.0f, "%.2f")) p.gravity = Vec4(g[0], g[1], g[2], g[3]);
+    edited();
+  }
+  auto slider = [&](const char* label, double& value, double lo, double hi, const char* format, bool log) {
+    float f = static_cast<float>(value);
+    if (ImGui::SliderFloat(label, &f, static_cast<float>(lo), static_cast<float>(hi), format,
+                           log ? ImGuiSliderFlags_Logarithmic : 0))
+      value = f;
+    edited();
+  };
+  slider("friction", p.friction, 0.0, 2.0, "%.2f", false);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("0 = slippery: the cloth slides off the ribbon");
+  slider("stiffness N/m", p.stiffness, 1.0, 5000.0, "%.0f", true);
+  slider("thickness", p.thickness, 0.001, 0.2, "%.3f", true);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the contact layer δ collision avoidance keeps between sheets in R^4");
+  slider("damping N s/m", p.damping, 0.0, 1.0, "%.3f", false);
+  int integrator = p.integrator == "paper-euler" || p.integrator == "explicit-euler" ? 1 : 0;
+  if (ImGui::Combo("integrator", &integrator, kIntegratorNames, 2)) {
+    record_setting();
+    p.integrator = kIntegratorNames[integrator];
+    released = true;
+  }
+  const auto now = std::chrono::steady_clock::now();
+  if (released || (changed && now - last_settings_send_ > std::chrono::milliseconds(150))) {
+    session.send(live_settings(p));
+    last_settings_send_ = now;
+  }
+  if (st.message[0]) ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "%s", st.message);
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Hand");
+  if (snap) {
+    for (int i = 0; i < snap->param_count && i < kLiveParamCount; ++i) {
+      const SceneParam& sp = snap->params[i];
+      double v = sp.value;
+      char label[64];
+      std::snprintf(label, sizeof label, "%s##band%d", sp.name, i);
+      if (ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &sp.min, &sp.max, "%.3g")) session.loop()->set_param(i, v);
+      record_tool_setting(model, std::string("change the hand's ") + sp.name, [] {});
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", sp.unit);
+    }
+  }
+  {  // the Touch tool: pull one vertex on the band, or carry a patch that stays where it is left
+    GrabTool& g = model.grab;
+    bool carry_before = g.carry();
+    double radius_before = g.carry_radius();
+    const auto put_back = [&] {
+      const bool c = g.carry();
+      const double r = g.carry_radius();
+      g.set_carry(carry_before);
+      g.set_carry_radius(radius_before);
+      carry_before = c;
+      radius_before = r;
+    };
+    bool carry = g.carry();
+    if (ImGui::Checkbox("carry a patch (C)", &carry)) g.set_carry(carry);
+    record_tool_setting(model, "change the touch", put_back);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("on: a drag carries the patch around the vertex (its radius along the surface),\n"
+                        "which stays held where it is let go (clear pins or P frees it; Ctrl+Z undoes it);\n"
+                        "off: a drag pulls one vertex on the rubber band");
+    if (g.carry()) {
+      float r = static_cast<float>(g.carry_radius());
+      if (ImGui::SliderFloat("radius ([ ])", &r, static_cast<float>(GrabTool::kMinCarryRadius),
+                             static_cast<float>(GrabTool::kMaxCarryRadius), "%.3f", ImGuiSliderFlags_Logarithmic))
+        g.set_carry_radius(r);
+      record_tool_setting(model, "change the carry radius", put_back);
+    }
+  }
+  ImGui::Text("pins: %d", st.pinned);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("clear pins")) {
+    session.record("clear the pins");
+    session.send(live_command(LiveCode::kClearPins));
+  }
+  if (st.held_vertex >= 0)
+    ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex,
+                st.grab_mode == 1 ? (session.dimension() == 3 ? "(along the depth)" : "(along w)") : "", st.band_force);
+
+  ImGui::Separator();
+  const SimulationRates r = session.rates();
+  ImGui::Text("t = %s, %lld steps (%s)", seconds(st.sim_time).c_str(), static_cast<long long>(st.sim_steps),
+              st.playing ? "playing" : "paused");
+  ImGui::Text("%.0f steps/s, real-time ratio %.2f", r.steps_per_second, r.real_time_ratio);
+  if (st.lag > 0.05) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "the physics cannot keep up: slow motion");
+  ImGui::Text("contacts %d, rollbacks %lld, fail-safe freezes %lld", st.contacts, static_cast<long long>(st.rollbacks),
+              static_cast<long long>(st.ccd_freezes + st.global_freezes));
+  const MonitorResult c = session.checks();
+  if (c.valid) {
+    const ImVec4 colour = c.true_intersections == 0 ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.3f, 0.3f, 1);
+    ImGui::TextColored(colour, "true intersections: %d", c.true_intersections);
+    if (std::isfinite(c.min_gap)) {
+      ImGui::SameLine();
+      ImGui::Text("  smallest gap %.4f", c.min_gap);
+    }
+    ImGui::TextDisabled("checked at t = %.2f s (%.0f ms a check)", c.sim_time, c.check_ms);
+  } else {
+    ImGui::TextDisabled("checking...");
+  }
+  ImGui::End();
+}
+
+// [SECTION] Scenario banner
+void Panels::scenario_banner(GuiModel& model) {
+  const auto& sc = model.session.scenario();
+  const std::string& what_to_do = model.scene().instruction;
+  if (!sc && what_to_do.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 30), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(std::max(200.0f, std::min(560.0f, display.x - 700)), 400));
+  ImGui::Begin(sc ? "Scenario" : "What to do", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(200.0f, std::min(540.0f, display.x - 720)));
+  if (!sc) {  // a scene that says what to do with it by hand
+    ImGui::TextWrapped("%s", what_to_do.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+    return;
+  }
+  ImGui::TextWrapped("%s: %s", sc->name.c_str(), sc->instruction.c_str());
+  ImGui::TextDisabled("Space plays, Play script shows it done; shadow4d run %s gives the same verdict",
+                      sc->file.filename().string().c_str());
+  const MonitorResult c = model.session.checks();
+  if (c.verdict) {
+    const bool pass = c.verdict->pass && c.true_intersections == 0;
+    ImGui::TextColored(pass ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.75f, 0.35f, 1), "%s", pass ? "PASS" : "not yet");
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", c.verdict->detail.c_str());
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+// The ribbon tool's options, while it is the tool.
+void Panels::ribbon_panel(GuiModel& model) {
+  if (model.tool != ToolChoice::kSketchRibbon) return;
+  ImGui::SetNextWindowPos(ImVec2(350, ImGui::GetIO().DisplaySize.y - 150), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Ribbon", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  RibbonSketchOptions& o = model.ribbon.options;
+  RibbonSketchOptions before = o;
+  const auto put_back = [&] { std::swap(o, before); };
+  float width = static_cast<float>(o.width);
+  if (ImGui::SliderFloat("width", &width, 0.0f, 1.0f, width > 0 ? "%.3f" : "from the view")) o.width = width;
+  record_tool_setting(model, "change the ribbon's width", put_back);
+  ImGui::Checkbox("closed (a loop)", &o.closed);
+  record_tool_setting(model, "change the ribbon's ends", put_back);
+  ImGui::SliderInt("across", &o.across, 2, 8);
+  record_tool_setting(model, "change the ribbon's rows", put_back);
+  if (const SketchedRibbon* r = model.ribbon.last()) {
+    ImGui::Text("last: %zu rows, length %.2f, %zu passage(s)", r->w.size(), r->length, r->passages.size());
+    for (const RibbonPassage& p : r->passages)
+      ImGui::BulletText("%s %s (gap %.3f)", p.below ? "below" : "above",
+                        p.surface < 0 ? "itself" : "another surface", p.gap);
+  }
+  ImGui::End();
+}
+
+// Every step done (oldest first) and undone (greyed, next to redo first); the buttons walk it.
+void Panels::history_panel(GuiModel& model) {
+  if (!model.show_history) return;
+  ImGui::SetNextWindowSize(ImVec2(300, 300), ImGuiCond_FirstUseEver);
+  ImGui::Begin("History", &model.show_history);
+  Session& s = model.session;
+  const History& h = s.history();
+  if (ImGui::Button("Undo")) undo_or_redo(model, false);
+  ImGui::SameLine();
+  if (ImGui::Button("Redo")) undo_or_redo(model, true);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu step(s), %.1f MB", h.done_labels().size() + h.undone_labels().size(),
+                      static_cast<double>(h.bytes()) / (1 << 20));
+  ImGui::Separator();
+  const auto done = h.done_labels();
+  for (std::size_t i = 0; i < done.size(); ++i) ImGui::Text("%zu  %s", i + 1, done[i].c_str());
+  for (const std::string& l : h.undone_labels()) ImGui::TextDisabled("    %s (undone)", l.c_str());
+  if (done.empty() && !h.can_redo()) ImGui::TextDisabled("nothing done yet");
+  ImGui::TextDisabled("the last %zu steps or %zu MB are kept", History::kMaxSteps, History::kMaxBytes >> 20);
+  ImGui::End();
+}
+
+// After a crash or a kill: the autosave the last run left, taken up or set aside.
+void Panels::restore_dialog(GuiModel& model) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("Restore your work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+  const SessionFile& f = *model.pending_restore;
+  const double ago = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() - f.saved_at;
+  ImGui::Text("The last run did not quit normally. Its autosave (from '%s', %.0f s ago) holds", f.opened.c_str(), ago);
+  ImGui::Text("%zu object(s) and %d step(s) of work.", f.scene.objects.size(), f.history_head);
+  if (ImGui::Button("Restore")) {
+    const SessionFile saved = *model.pending_restore;
+    model.pending_restore.reset();
+    open_session(model, saved, model.autosave_path);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Start afresh")) {
+    model.pending_restore.reset();
+    model.status = "the autosave stays in " + model.autosave_path + " until the next one";
+  }
+  ImGui::End();
+}
+
+// [SECTION] Generator dialog
+void Panels::generator_dialog(GuiModel& model) {
+  if (!generator_dialog_open_) return;
+  const GeneratorInfo* info = find_generator(generator_);
+  if (!info) {
+    generator_dialog_open_ = false;
+    return;
+  }
+  ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_Appearing);
+  ImGui::Begin(("Create " + info->name).c_str(), &generator_dialog_open_);
+  ImGui::TextWrapped("%s", info->description.c_str());
+  for (const auto& p : info->params) {
+    double& value = generator_params_[p.name];
+    if (p.integer) {
+      int i = static_cast<int>(std::lround(value));
+      ImGui::DragInt(p.name.c_str(), &i, 0.25f, static_cast<int>(p.min), static_cast<int>(p.max));
+      value = i;
+    } else {
+      float f = static_cast<float>(value);
+      ImGui::DragFloat(p.name.c_str(), &f, static_cast<float>((p.max - p.min) / 500.0),
+                       static_cast<float>(p.min), static_cast<float>(p.max), "%.3f");
+      value = f;
+    }
+    if (ImGui::IsItemHovered() && !p.help.empty()) ImGui::SetTooltip("%s", p.help.c_str());
+  }
+  // Where the object goes: its offset from where the generator puts it (usually the origin).
+  float at[4] = {static_cast<float>(generator_offset_[0]), static_cast<float>(generator_offset_[1]),
+                 static_cast<float>(generator_offset_[2]), static_cast<float>(generator_offset_[3])};
+  const bool in_r4 = info->dim == 4;
+  if (in_r4 ? ImGui::DragFloat4("position (x y z w)", at, 0.01f, -100.0f, 100.0f, "%.2f")
+            : ImGui::DragFloat3("position (x y z)", at, 0.01f, -100.0f, 100.0f, "%.2f"))
+    generator_offset_ = Vec4(at[0], at[1], at[2], in_r4 ? at[3] : 0.0f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("added beside what is in the scene (also: a scene's \"offset\", or NAME:k=v@x,y,z[,w])");
+  const bool replace = ImGui::Button("Replace scene");
+  ImGui::SameLine();
+  const bool add = ImGui::Button("Add to scene");
+  if (replace || add) {
+    try {
+      SceneObject obj;
+      obj.generator = GeneratorCall{info->name, generator_params_};
+      obj.placement.offset = generator_offset_;
+      obj.shape = placed(generate(info->name, generator_params_), obj.placement);
+      obj.name = info->name + "-" + std::to_string(model.created + 1);
+      if (replace) {
+        Document d;
+        d.spec = info->name;
+        d.scene.objects.push_back(std::move(obj));
+        open(model, std::move(d));
+        if (info->dim == 4) model.view.turn_to_generic_view();
+      } else {
+        const std::string label = "create " + obj.name;
+        model.session.add_object(std::move(obj), label);  // the bodies there keep their motion and pins
+      }
+      ++model.created;
+      model.status = "created " + info->name;
+    } catch (const std::exception& e) {
+      model.error = e.what();
+    }
+  }
+  ImGui::End();
+}
+
+
+}  // namespace s4d
