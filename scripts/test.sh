@@ -44,6 +44,11 @@ phase "release: tests" ctest --preset release -j"$jobs"
 # in Relax.TrefoilStaysATrefoil...), MeshProximity.CoherentQueriesEqualFreshOnesAlongAMotion (156
 # s; the coherent grid run and the brute-force comparisons stay) and HapticScenes.OnItsOwnThreadA
 # SlowPhysicsNeverStallsTheLoop (a timing assertion no instrumented build keeps, as under TSan).
+# And the knot exercises' whole-table tests, SameKnotExercise.EveryPairIsDecidedAsTheTablesSay (804 s
+# instrumented, 9 s in release: twelve pairs of relaxed table knots; it alone had made the phase
+# wait 13 minutes, measured 2026-12-05) and UnknottingExercise.EveryKnotHasACrossingThatUnknotsIt
+# InItsPicture (104 s, 2 s in release): cli.knot_exercise_same and cli.knot_exercise_unknot run the
+# same code instrumented end to end, and the sibling exercise tests stay in.
 phase "asan: configure" cmake --preset asan
 phase "asan: build" cmake --build --preset asan -j"$jobs"
 phase "asan: tests" ctest --preset asan -j"$jobs"
