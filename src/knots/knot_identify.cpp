@@ -366,10 +366,30 @@ std::string link_summary(const KnotIdentification& id) {
   return s;
 }
 
+// What a table link must share with the link besides HOMFLY-PT: its components' knot types (up to
+// mirror image) and the sorted |linking numbers| of its pairs of components.
+struct LinkTraits {
+  std::vector<std::string> knots;
+  std::vector<int> abs_linking;
+};
+
+LinkTraits link_traits(const KnotIdentification& id) {
+  LinkTraits t;
+  for (const auto& k : id.components) t.knots.push_back(knot_type_up_to_mirror(k));
+  const int m = id.invariants.components;
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j) t.abs_linking.push_back(std::abs(id.invariants.linking[i][j]));
+  std::sort(t.abs_linking.begin(), t.abs_linking.end());
+  return t;
+}
+
+std::string table_range(const LinkTable& links) {
+  return "up to " + std::to_string(links.max_crossings()) + " crossings";
+}
+
 void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTable& links) {
   const KnotInvariants& inv = id.invariants;
   const int m = inv.components, c = inv.simplified_crossings;
-  const std::string table_range = "up to " + std::to_string(links.max_crossings()) + " crossings";
   if (inv.homfly == unlink_homfly(m)) {
     id.proven = c == 0;
     id.link_name = "unlink of " + std::to_string(m) + " components";
@@ -377,18 +397,14 @@ void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTab
     return;
   }
   if (inv.simplified_pieces > 1) {  // Regina's simplification separated it: split, outside the table
-    id.name = "split link, not in the table (which holds non-split links " + table_range + "): " + link_summary(id);
+    id.name = "split link, not in the table (which holds non-split links " + table_range(links) + "): " + link_summary(id);
     return;
   }
-  std::vector<std::string> mine;
-  for (const auto& k : id.components) mine.push_back(knot_type_up_to_mirror(k));
-  std::vector<int> abs_lk;
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j) abs_lk.push_back(std::abs(inv.linking[i][j]));
-  std::sort(abs_lk.begin(), abs_lk.end());
+  const LinkTraits traits = link_traits(id);
   for (const LinkMatch& match : links.with_key(inv.fingerprint)) {
     const LinkTableEntry& e = *match.entry;
-    if (e.components != m || e.abs_linking != abs_lk || !same_knot_types(e.component_knots, mine)) continue;
+    if (e.components != m || e.abs_linking != traits.abs_linking || !same_knot_types(e.component_knots, traits.knots))
+      continue;
     const Chirality ch = match.as_table && match.mirror ? Chirality::kUnknown
                          : match.mirror                 ? Chirality::kMirror
                                                         : Chirality::kAsTable;
@@ -402,20 +418,14 @@ void identify_link(KnotIdentification& id, const KnotIndex& index, const LinkTab
 void settle_link(KnotIdentification& id, const KnotIndex& index, const LinkTable& links) {
   const KnotInvariants& inv = id.invariants;
   const int m = inv.components, c = inv.simplified_crossings;
-  const std::string table_range = "up to " + std::to_string(links.max_crossings()) + " crossings";
   std::erase_if(id.link_candidates, [](const LinkCandidate& l) { return l.entry == nullptr; });  // found again below
   id.proven = false;
   id.link_name.clear();
-  std::vector<std::string> mine;
-  for (const auto& k : id.components) mine.push_back(knot_type_up_to_mirror(k));
-  std::vector<int> abs_lk;
-  for (int i = 0; i < m; ++i)
-    for (int j = i + 1; j < m; ++j) abs_lk.push_back(std::abs(inv.linking[i][j]));
-  std::sort(abs_lk.begin(), abs_lk.end());
   const std::size_t table_candidates = id.link_candidates.size();
   if (table_candidates == 1 && c <= links.max_crossings()) {
     // Proven unless a split or composite link (outside the table) has the same invariants.
-    LinkPieceSearch search{link_pieces(index, links), mine, abs_lk, 4, {}};
+    const LinkTraits traits = link_traits(id);
+    LinkPieceSearch search{link_pieces(index, links), traits.knots, traits.abs_linking, 4, {}};
     std::vector<const LinkPiece*> path;
     std::uint64_t rest = inv.fingerprint;
     for (int splits = 0; splits < m; ++splits) {
@@ -426,7 +436,7 @@ void settle_link(KnotIdentification& id, const KnotIndex& index, const LinkTable
     id.proven = search.found.empty();
   }
   if (table_candidates == 0) {
-    id.name = "not in the table (" + table_range + ")" +
+    id.name = "not in the table (" + table_range(links) + ")" +
               (c > links.max_crossings() ? ", " + std::to_string(c) + " crossings after simplification" : "") +
               ": " + link_summary(id);
     return;
