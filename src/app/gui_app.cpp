@@ -281,7 +281,7 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
     for (int v = 0; v < nv; ++v) {
       ImVec2 px;
       const Vec3 p = s.vertex_shadow(v);
-      pixels.push_back(p.allFinite() && to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
+      pixels.push_back(to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
     }
     j["vertex_pixels"] = pixels;
   }

@@ -15,10 +15,12 @@ namespace {
 // A knot's depth is the view's; a surface's shadow ray runs along w.
 const char* along_what(const Session& s) { return s.dimension() == 3 ? "along the depth" : "along w"; }
 
+std::string radius_text(double r) { return std::to_string(r).substr(0, 5); }
+
 }  // namespace
 
 std::string GrabTool::help() const {
-  std::string h = carry_ ? "touch: drag to carry the patch of radius " + std::to_string(carry_radius_).substr(0, 5) +
+  std::string h = carry_ ? "touch: drag to carry the patch of radius " + radius_text(carry_radius_) +
                                " (it stays held; [ ] size it, C: pull instead), Alt: along the shadow ray, Tab: next sheet, "
                                "P / right click: pin"
                          : "touch: drag a surface or a strand to pull it (Alt: along the shadow ray, C: carry a patch), "
@@ -133,7 +135,7 @@ void GrabTool::set_carry_radius(double r) {
 bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
   if (k == ToolKey::kCarry && !holding_) {
     carry_ = !carry_;
-    message_ = carry_ ? "carry: a drag carries the patch of radius " + std::to_string(carry_radius_).substr(0, 5) +
+    message_ = carry_ ? "carry: a drag carries the patch of radius " + radius_text(carry_radius_) +
                             " around the vertex, and it stays held ([ ] size it)"
                       : "pull: a drag pulls one vertex on the rubber band";
     return true;
@@ -141,7 +143,7 @@ bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
   if ((k == ToolKey::kSmaller || k == ToolKey::kLarger) && !holding_) {
     set_carry_radius(carry_radius_ * (k == ToolKey::kLarger ? 1.25 : 0.8));
     carry_ = true;
-    message_ = "carry radius " + std::to_string(carry_radius_).substr(0, 5);
+    message_ = "carry radius " + radius_text(carry_radius_);
     return true;
   }
   if (k == ToolKey::kTab && !holding_) {

@@ -578,14 +578,25 @@ Vec4 Session::vertex_view(int v) const {
   const int o = object_of_vertex(v);
   if (o < 0 || o >= static_cast<int>(doc_.scene.objects.size()))
     return Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
-  const int local = v - first_[static_cast<std::size_t>(o)];
+  // Indexed, not walked: the overlay asks for every pinned vertex each frame (a carried patch
+  // pins hundreds).
+  std::size_t local = static_cast<std::size_t>(v - first_[static_cast<std::size_t>(o)]);
   Vec4 at = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
-  int i = 0;
-  for_each_point(doc_.scene.objects[static_cast<std::size_t>(o)].shape, [&](const auto& p) {
-    if (i++ != local) return;
+  const auto view = [&](const auto& p) {
     if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) at = doc_.scene.frame.to_view(p);
     else at << p, 0;
-  });
+  };
+  std::visit([&](const auto& sh) {
+    using T = std::decay_t<decltype(sh)>;
+    if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+      if (local < sh.vertices.size()) view(sh.vertices[local]);
+    } else {
+      for (const auto& c : sh.components) {
+        if (local < c.points.size()) return view(c.points[local]);
+        local -= c.points.size();
+      }
+    }
+  }, doc_.scene.objects[static_cast<std::size_t>(o)].shape);
   return at;
 }
 
