@@ -373,7 +373,7 @@ class Core {
       return;
     }
     const auto x = w.positions();
-    if (!carrying_ || carry_grab_ != hand_.grab || carry_vertex_ != hand_.vertex) {
+    if (!carrying_ || carry_grab_ != hand_.grab) {  // every new grab counts up, whatever the vertex
       const int centre[] = {hand_.vertex};
       grow_patch<D>(w.model(), x, centre, hand_.carry_radius, patch_, patch_scratch_);
       carry_start_.clear();
@@ -383,7 +383,6 @@ class Core {
       }
       carried_.setZero();
       carry_grab_ = hand_.grab;
-      carry_vertex_ = hand_.vertex;
       carrying_ = true;
     }
     // Where the hand wants the centre, as a displacement from its start, on the axes it moves.
@@ -438,7 +437,6 @@ class Core {
   static constexpr double kCarrySpeed = 2;  // scene units (m) per s: a brisk hand
   bool carrying_ = false;
   std::uint64_t carry_grab_ = 0;
-  int carry_vertex_ = -1;
   Patch patch_;
   PatchScratch patch_scratch_;
   std::vector<Vec<D>> carry_start_;  // the patch's positions at the grab
