@@ -1,0 +1,105 @@
+// `knot identify`, `knot info` and `knot code`: a curve's name, the live panel's information about
+// it, and its diagram's codes in a view.
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "knot_commands.hpp"
+#include "knot_input.hpp"
+#include "knots/knot_invariants.hpp"
+
+namespace s4d::cli {
+
+using nlohmann::json;
+
+void add_knot_identify(CLI::App& knot) {
+  struct Args {
+    KnotCurveArgs curve;
+    bool prove = false;
+  };
+  auto a = std::make_shared<Args>();
+  auto* identify = knot.add_subcommand("identify", "name the knot or link of a curve");
+  add_curve_args(identify, a->curve);
+  identify->add_flag("--prove-unknot", a->prove, "when only invariants say unknot, prove it (slow)");
+  identify->callback([a] {
+    IdentifyOptions o;
+    o.frame = parse_view(a->curve.view);
+    o.prove_unknot = a->prove;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto id = identify_knot(load_knot_curve(a->curve.file), o);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (a->curve.json_out) {
+      json j = identification_json(id);
+      j["milliseconds"] = ms;
+      std::cout << j.dump(2) << "\n";
+    } else {
+      print_identification(id);
+    }
+  });
+}
+
+void add_knot_code(CLI::App& knot) {
+  auto a = std::make_shared<KnotCurveArgs>();
+  auto* code = knot.add_subcommand("code", "Gauss, PD and DT codes of a curve's diagram in a view");
+  add_curve_args(code, *a);
+  code->callback([a] {
+    Frame<3> used;
+    const KnotDiagram d = diagram_from_curve(load_knot_curve(a->file), parse_view(a->view), {}, &used);
+    const json j = codes_json(d);
+    if (a->json_out) {
+      std::cout << j.dump(2) << "\n";
+      return;
+    }
+    for (const auto& [k, v] : j.items())
+      std::cout << k << ": " << (v.is_string() ? v.get<std::string>() : v.dump()) << "\n";
+  });
+}
+
+namespace {
+
+void print_info(const KnotInfo& k) {
+  std::cout << "name: " << k.name << (k.proven ? "" : "  [not proven]") << "\n";
+  if (!k.chirality.empty()) std::cout << "chirality: " << k.chirality << "\n";
+  if (k.candidates.size() > 1) {
+    std::cout << "candidates:";
+    for (const auto& x : k.candidates) std::cout << " " << x << ";";
+    std::cout << "\n";
+  }
+  for (const auto& x : k.decided_by) std::cout << "decided by: " << x << "\n";
+  for (const auto& x : k.further_used) std::cout << "further invariant tried: " << x << "\n";
+  std::cout << "crossings: " << k.view_crossings << " in this view, " << k.simplified_crossings
+            << " after simplification\n"
+            << "Gauss code: " << k.gauss_code << "\n"
+            << "writhe: " << k.writhe << "\n";
+  if (k.components > 1) std::cout << "linking numbers: " << json(k.linking).dump() << "\n";
+  std::cout << "Alexander: " << k.alexander << "\nJones: " << k.jones << "\nHOMFLY-PT: " << k.homfly
+            << "\ndeterminant: " << k.determinant << "\n(" << k.milliseconds << " ms)\n";
+}
+
+}  // namespace
+
+void add_knot_info(CLI::App& knot) {
+  struct Args {
+    KnotCurveArgs curve;
+    bool no_refine = false;
+  };
+  auto a = std::make_shared<Args>();
+  auto* info = knot.add_subcommand("info", "the live information panel of a curve in a view");
+  add_curve_args(info, a->curve);
+  info->add_flag("--no-refine", a->no_refine, "skip the further invariants (covers, Reidemeister search)");
+  info->callback([a] {
+    KnotInfoOptions o;
+    o.refine = !a->no_refine;
+    const Curve<3> c = load_knot_curve(a->curve.file);
+    const KnotInfo k =
+        knot_info(c, a->curve.view.empty() ? std::nullopt : std::optional(parse_view(a->curve.view)), o);
+    if (a->curve.json_out) {
+      std::cout << info_json(k).dump(2) << "\n";
+      return;
+    }
+    print_info(k);
+  });
+}
+
+}  // namespace s4d::cli
