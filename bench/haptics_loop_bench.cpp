@@ -13,7 +13,7 @@
 #include "haptics/haptic_loop.hpp"
 #include "haptics/haptic_session.hpp"
 #include "haptics/simulated_arm.hpp"
-#include "interact/haptic_scenes.hpp"
+#include "interact/live/haptic_scenes.hpp"
 #include "io/scene.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "interact/surface_explorer.hpp"
+#include "interact/live/surface_explorer.hpp"
 #include "shape/generators.hpp"
 
 namespace s4d {

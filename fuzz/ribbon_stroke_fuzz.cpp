@@ -1,7 +1,7 @@
 // libFuzzer target: a ribbon sketch's stroke file (`shadow4d sketch-ribbon`): "x y z u" samples,
 // made into a ribbon with nothing else in the scene (interact/ribbon_sketch).
 #include "fuzz_target.hpp"
-#include "interact/ribbon_sketch.hpp"
+#include "interact/tools/ribbon_sketch.hpp"
 
 S4D_FUZZ_TARGET(text) {
   const auto stroke = s4d::parse_ribbon_stroke(text, "fuzz.txt", 0.01);

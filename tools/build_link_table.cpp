@@ -5,6 +5,7 @@
 //       the CSV is `zcat knotpy/tables/data/links_11.csv.gz`, see data/knots/README.md)
 //   build_link_table --out link_table.tsv            (recompute every column from the PD codes)
 //   build_link_table --out link_table.tsv --check    (exit 1 if the file is not up to date)
+// Sections: [SECTION] knotpy's native notation, [SECTION] invariants
 #include <link/link.h>
 
 #include <algorithm>

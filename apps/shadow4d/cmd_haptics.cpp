@@ -15,7 +15,7 @@
 #include "haptics/haptic_session.hpp"
 #include "haptics/replay_device.hpp"
 #include "haptics/simulated_arm.hpp"
-#include "interact/haptic_scenes.hpp"
+#include "interact/live/haptic_scenes.hpp"
 
 namespace s4d::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include "haptics/device_spec.hpp"
 #include "haptics/replay_device.hpp"
 #include "haptics/simulated_arm.hpp"
-#include "interact/touch_sketch_run.hpp"
+#include "interact/live/touch_sketch_run.hpp"
 #include "io/object_file.hpp"
 #include "knot_commands.hpp"
 #include "knot_input.hpp"

@@ -10,9 +10,9 @@
 
 #include "command.hpp"
 #include "core/error.hpp"
-#include "interact/autosave.hpp"
-#include "interact/live_simulation.hpp"
-#include "interact/session.hpp"
+#include "interact/session/autosave.hpp"
+#include "interact/live/live_simulation.hpp"
+#include "interact/session/session.hpp"
 
 namespace s4d::cli {
 namespace {
@@ -71,7 +71,7 @@ void run(const RunArgs& a) {
   if (!session.simulating() && session.document().spec.empty()) session.open(load_document(a.input), o);
   if (!session.simulating())
     throw Error("nothing to simulate: " + (session.physics_error().empty() ? std::string("no surface") : session.physics_error()));
-  session.send(live_command(LiveCode::kPlay));
+  session.send(live::Play{});
   std::mt19937 rng(a.seed);
   const auto t0 = std::chrono::steady_clock::now();
   auto next_edit = t0;
@@ -89,23 +89,23 @@ void run(const RunArgs& a) {
       std::uniform_int_distribution<int> vertex(0, nv - 1), action(0, 9);
       const int act = action(rng);
       if (holding) {
-        session.send(live_command(LiveCode::kRelease));
+        session.send(live::Release{});
         holding = false;
       } else if (act < 6) {  // grab a vertex and pull it a little
         const int v = vertex(rng);
         hand = session.vertex_shadow(v);
         session.record("drag vertex " + std::to_string(v));
         session.set_hand(hand, true);
-        session.send(live_grab(v, act == 5 ? 1 : 0, hand));
+        session.send(live::Grab{v, act == 5 ? live::GrabMode::kAlongRay : live::GrabMode::kShadow, live::point(hand)});
         holding = true;
         ++edits;
       } else if (act < 8) {
         const int v = vertex(rng);
         session.record("pin vertex " + std::to_string(v));
-        session.send(live_command(LiveCode::kTogglePin, v));
+        session.send(live::Pin{v, live::PinAction::kToggle});
         ++edits;
       } else if (session.undo()) {
-        session.send(live_command(LiveCode::kPlay));
+        session.send(live::Play{});
         ++undos;
       }
     }

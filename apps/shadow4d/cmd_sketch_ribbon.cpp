@@ -10,7 +10,7 @@
 #include "command.hpp"
 #include "core/error.hpp"
 #include "core/plane.hpp"
-#include "interact/ribbon_sketch.hpp"
+#include "interact/tools/ribbon_sketch.hpp"
 #include "io/scene.hpp"
 
 namespace s4d::cli {

@@ -18,12 +18,12 @@
 #include "command.hpp"
 #include "core/error.hpp"
 #include "haptics/trajectory_file.hpp"
-#include "interact/autosave.hpp"
-#include "interact/knot_sketch_tool.hpp"
-#include "interact/live_simulation.hpp"
-#include "interact/ribbon_tool.hpp"
-#include "interact/session.hpp"
-#include "interact/view_edit.hpp"
+#include "interact/session/autosave.hpp"
+#include "interact/tools/knot_sketch_tool.hpp"
+#include "interact/live/live_simulation.hpp"
+#include "interact/tools/ribbon_tool.hpp"
+#include "interact/session/session.hpp"
+#include "interact/tools/view_edit.hpp"
 #include "shape/mesh_checks.hpp"
 
 #ifndef S4D_SCENES_DIR
@@ -168,7 +168,7 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
     t.problems.push_back(scenario.filename().string() + ": the replay hand did not open: " + s.device_error());
     return;
   }
-  s.send(live_command(LiveCode::kPlay));
+  s.send(live::Play{});
   Autosaver autosaver({dir / "autosave.s4d", 2.0, 2});
   RibbonTool ribbon;
   std::uniform_real_distribution<double> u(0, 1);
@@ -195,32 +195,33 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
       if (a < 0.25) {
         const int v = vertex(rng);
         s.record("drag vertex " + std::to_string(v));
-        s.send(live_grab(v, u(rng) < 0.2 ? 1 : 0, s.vertex_shadow(v)));
+        s.send(live::Grab{v, u(rng) < 0.2 ? live::GrabMode::kAlongRay : live::GrabMode::kShadow, live::point(s.vertex_shadow(v))});
         ++t.grabs;
       } else if (a < 0.35) {
-        s.send(live_command(LiveCode::kRelease));
+        s.send(live::Release{});
       } else if (a < 0.45) {
         s.record("turn in 4D");
         s.scene().frame.rotate(all_planes(4)[static_cast<std::size_t>(plane(rng))], (u(rng) - 0.5) * 0.6);
-        s.send(live_frame(s.scene().frame));
+        s.send(live::SetFrame::from(s.scene().frame));
         ++t.turns;
       } else if (a < 0.55) {
         const int v = vertex(rng);
         s.record("pin vertex " + std::to_string(v));
-        s.send(live_command(LiveCode::kTogglePin, v));
+        s.send(live::Pin{v, live::PinAction::kToggle});
         ++t.pins;
       } else if (a < 0.62) {
         if (s.undo()) {
           ++t.undos;
-          s.send(live_command(LiveCode::kPlay));
+          s.send(live::Play{});
         }
       } else if (a < 0.67) {
         if (s.redo()) {
           ++t.redos;
-          s.send(live_command(LiveCode::kPlay));
+          s.send(live::Play{});
         }
       } else if (a < 0.75 && s.dimension() == 4) {
-        s.send(live_explore(!snap->status.exploring, s.vertex_shadow(vertex(rng))));
+        if (snap->status.exploring) s.send(live::StopExploring{});
+        else s.send(live::StartExploring{live::point(s.vertex_shadow(vertex(rng)))});
         ++t.explorations;
       } else if (a < 0.77) {
         // A ribbon stroke across the scene, above or below where it passes other sheets.
@@ -229,12 +230,12 @@ void soak_scenario(const fs::path& scenario, double seconds, const fs::path& dir
         for (int i = 0; i < 60; ++i) stroke.push_back({c + (i / 59.0 - 0.5) * 3.0 * d + Vec3(0, 0, 0.3), i * 0.01, u(rng) < 0.5});
         if (ribbon.finish(stroke, Vec3::UnitZ(), 4.0, s)) {
           ++t.ribbons;
-          s.send(live_command(LiveCode::kPlay));
+          s.send(live::Play{});
         } else {
           ++t.ribbons_refused;  // refused with a reason (a fold, contradictory choices): fine
         }
       } else if (a < 0.78) {
-        s.send(live_settings(s.scene().physics));  // a settings round trip through the loop
+        s.send(live::SetPhysics::from(s.scene().physics));  // a settings round trip through the loop
       }
     }
     if (autosaver.tick(s, now)) ++t.autosaves;

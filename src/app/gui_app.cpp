@@ -1,8 +1,8 @@
 // The window loop: input (GLFW or the input file) -> session refresh -> the active tool or the
 // view -> panels -> scene drawing and tool overlays -> ImGui -> swap.
 //
-// [SECTION] view rays and overlays   [SECTION] knot sketch and crossings   [SECTION] input routing
-// [SECTION] scripted commands   [SECTION] the loop
+// [SECTION] view rays and overlays   [SECTION] input routing   [SECTION] scripted commands
+// [SECTION] the loop
 #include "app/gui_app.hpp"
 
 #include <GLFW/glfw3.h>
@@ -22,14 +22,16 @@
 #include "app/haptics_window.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
+#include "app/screen.hpp"
 #include "app/tool_settings.hpp"
-#include "interact/knot_sketch_tool.hpp"
+#include "app/window_dump.hpp"
+#include "interact/tools/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
-#include "interact/autosave.hpp"
-#include "interact/live_simulation.hpp"
+#include "interact/session/autosave.hpp"
+#include "interact/live/live_simulation.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
-#include "interact/view_edit.hpp"
+#include "interact/tools/view_edit.hpp"
 
 namespace s4d {
 
@@ -67,8 +69,6 @@ ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window,
   return v;
 }
 
-bool to_screen(const Camera& camera, const Vec3& p, const Vec2& window, ImVec2& out);
-
 // The input file's move-to-vertex: the pointer to the vertex's pixel now (the last frame's view).
 void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, const Camera& camera, const Vec2& window) {
   ImVec2 px;
@@ -81,12 +81,6 @@ void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, co
   model.grab.prefer_depth(p.w());  // its sheet, where the shadow folds others onto it
 }
 
-bool to_screen(const Camera& camera, const Vec3& p, const Vec2& window, ImVec2& out) {
-  if (!p.allFinite() || camera.view_depth(p) <= camera.near_plane) return false;
-  const Vec2 n = camera.ndc(p);
-  out = ImVec2(static_cast<float>((n.x() + 1) / 2 * window.x()), static_cast<float>((1 - n.y()) / 2 * window.y()));
-  return true;
-}
 
 void draw_overlay(const Overlay& o, const Camera& camera, const Vec2& window) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
@@ -125,7 +119,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
     if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
     if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
       const bool playing = session.snapshot()->status.playing;
-      session.send(live_command(playing ? LiveCode::kPause : LiveCode::kPlay));
+      session.send(playing ? live::Request(live::Pause{}) : live::Request(live::Play{}));
       model.status = playing ? "paused (Space plays)" : "playing (Space pauses)";
     }
     if (!r.tool_drag) {
@@ -227,7 +221,7 @@ void explore_panel(GuiModel& model) {
   ImGui::End();
 }
 
-// [SECTION] scripted commands
+// F12's screenshot: the picture without the panels.
 void save_shot(const Image& image, const std::string& path, GuiModel& model) {
   try {
     write_png(image, path);
@@ -237,131 +231,6 @@ void save_shot(const Image& image, const std::string& path, GuiModel& model) {
   }
 }
 
-// The state a scripted test reads back: the simulation's status, the monitor's checks and every
-// vertex where it is now (world coordinates), and where the view draws the shadow's pinch points.
-void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                const Vec2& window, int window_frame) {
-  using Json = nlohmann::ordered_json;
-  Json j;
-  Session& s = model.session;
-  // The frame and the wall clock (s): two dumps give the frame rate over the frames between them.
-  j["window_frame"] = window_frame;
-  j["wall_time"] = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  j["simulating"] = s.simulating();
-  j["state_pending"] = s.state_pending();
-  j["physics_error"] = s.physics_error();
-  j["status"] = model.status;
-  j["error"] = model.error;
-  if (const HapticSnapshot* snap = s.snapshot()) {
-    const SceneStatus& st = snap->status;
-    j["sim_time"] = st.sim_time;
-    j["sim_steps"] = st.sim_steps;
-    j["playing"] = st.playing;
-    j["held_vertex"] = st.held_vertex;
-    j["grab_mode"] = st.grab_mode;
-    j["pinned"] = st.pinned;
-    j["contacts"] = st.contacts;
-    j["rollbacks"] = st.rollbacks;
-    j["device"] = snap->device_name;
-    j["max_force_output"] = snap->max_force_output;
-    j["safety_nonfinite"] = snap->safety.nonfinite;
-    j["loop_period_p999_us"] = snap->period.p999_us;
-    j["dim"] = snap->point_dimension;
-    j["positions"] = snap->points;
-    j["band_force"] = st.band_force;
-    Json pins = Json::array();
-    for (std::size_t v = 0; v < snap->flags.size(); ++v)
-      if (snap->flags[v] & 1) pins.push_back(v);
-    j["pinned_vertices"] = pins;
-    j["carry_radius"] = st.carry_radius;
-    // Where each vertex's shadow is on the screen (null when behind the eye), for tests that
-    // press on a chosen vertex.
-    Json pixels = Json::array();
-    const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
-    for (int v = 0; v < nv; ++v) {
-      ImVec2 px;
-      const Vec3 p = s.vertex_shadow(v);
-      pixels.push_back(to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
-    }
-    j["vertex_pixels"] = pixels;
-  }
-  {  // the World's cells, so a test can check every saved state with a checker of its own
-    Json tris = Json::array();
-    for (const Triangle& t : s.triangles()) tris.push_back({t[0], t[1], t[2]});
-    j["triangles"] = tris;
-  }
-  const MonitorResult c = s.checks();
-  j["checked"] = c.valid;
-  j["true_intersections"] = c.true_intersections;
-  j["min_gap"] = std::isfinite(c.min_gap) ? Json(c.min_gap) : Json(nullptr);
-  if (c.verdict) j["verdict"] = {{"pass", c.verdict->pass}, {"detail", c.verdict->detail}};
-  const Frame<4>& f = model.scene().frame;
-  Json frame = Json::array();
-  for (int r = 0; r < 4; ++r)
-    for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
-  j["frame"] = frame;
-  j["tool"] = model.active_tool()->name();
-  j["objects"] = model.scene().objects.size();
-  Json passes = Json::array();
-  for (const SceneEvent& e : model.explore.passes())
-    passes.push_back(e.kind == kEventPassedAbove ? "above" : e.kind == kEventPassedBelow ? "below" : e.kind == kEventCrossedOver ? "over" : "under");
-  j["explore_gauss"] = model.explore.gauss_so_far();
-  j["explore_passes"] = passes;
-  if (const HapticSnapshot* snap = s.snapshot()) {
-    j["exploring"] = snap->status.exploring;
-    j["probe_w"] = snap->status.probe_w;
-    j["relaxing"] = snap->status.relaxing;
-  }
-  if (const SketchedRibbon* r = model.ribbon.last()) {
-    Json ps = Json::array();
-    for (const RibbonPassage& p : r->passages) ps.push_back(p.below ? "below" : "above");
-    j["ribbon_passages"] = ps;
-  }
-  j["hits_under_cursor"] = model.grab.hits().size();
-  Json hits = Json::array();
-  for (const SheetHit& h : model.grab.hits())
-    hits.push_back({{"w", h.w}, {"vertex", s.first_vertex(h.object) < 0 ? -1 : s.first_vertex(h.object) + h.vertex}});
-  j["hits"] = hits;
-  {
-    const SketchPublished& k = model.knot.published();
-    j["sketch"] = {{"active", k.active},
-                   {"drawing", k.drawing},
-                   {"points", k.point_count},
-                   {"components", k.component_count},
-                   {"crossings_chosen", k.crossing_count},
-                   {"blocked_ticks", k.status.blocked_ticks},
-                   {"crossings_refused", k.status.crossings_refused},
-                   {"max_repulsion", k.status.max_repulsion},
-                   {"max_lag_near", k.status.max_lag_near},
-                   {"last_gauss", model.knot.last_gauss()},
-                   {"last_name", model.knot.last_name()}};
-  }
-  j["knot_panel_name"] = model.knot_panel_name;
-  Json knot_panels = Json::object();
-  knots.dump(knot_panels);
-  j["knot_panels"] = knot_panels;
-  j["depth_tone"] = model.depth_tone;
-  if (model.intersections.computed) {
-    Json pinch = Json::array();
-    for (const Vec3& p : model.intersections.pinch_at) {
-      ImVec2 px;
-      const bool seen = to_screen(camera, p, window, px);
-      pinch.push_back({{"at", {p.x(), p.y(), p.z()}}, {"pixel", seen ? Json{px.x, px.y} : Json(nullptr)}});
-    }
-    j["pinch_points"] = pinch;
-    j["curve_length"] = model.intersections.length;
-  }
-  j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
-  j["touch_and_sound_only"] = model.touch_and_sound_only;
-  j["sheet"] = model.grab.sheet();
-  j["restore_offered"] = model.pending_restore.has_value();
-  j["tool_settings"] = tool_settings(model);
-  j["history"] = s.history().done_labels();
-  std::ofstream out(path);
-  out << j.dump(1) << "\n";
-  if (!out) model.error = "cannot write " + path;
-}
-
 // Keeps the simulation's view of the hand in step with the picture: the 4D frame, and the device
 // workspace laid onto the view's ball as zoomed (not while a vertex is held: the hand must not jump).
 void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, DeviceMapping& sent_mapping) {
@@ -369,7 +238,7 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
   if (!s.loop() || !s.snapshot()) return;
   const Frame<4>& f = model.scene().frame;
   if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12) {
-    s.send(live_frame(f));
+    s.send(live::SetFrame::from(f));
     sent_frame = f;
   }
   const DeviceCapabilities& caps = s.snapshot()->caps;
@@ -410,19 +279,228 @@ void frame_the_fit(GuiModel& model) {
   scene.view.fit_radius = model.fit.radius;
 }
 
-}  // namespace
-
 // [SECTION] the loop
-int run_gui_app(const GuiOptions& options) {
-  std::vector<InputEvent> script;
-  if (!options.input.empty()) {
-    try {
-      script = read_input_file(options.input);
-    } catch (const std::exception& e) {
-      std::cerr << "shadow4d: " << e.what() << "\n";
-      return 1;
+// The window's parts that live as long as it does, and one frame of its loop.
+class GuiApp {
+ public:
+  GuiApp(GLFWwindow* window, const GuiOptions& options, std::vector<InputEvent> script)
+      : window_(window), options_(options), knot_panels_(options.exercise_seed),
+        autosaver_({options.autosave, options.autosave_seconds, 3}) {
+    input_.attach(window);
+    input_.set_script(std::move(script));
+    connect_session();
+    open_first();
+    offer_unfinished_autosave();
+    sent_frame_.rotate(Plane{0, 1}, 1.0);  // anything but the scene's: the first frame is sent
+    sent_mapping_.metres_per_unit = -1;
+    objects_seen_ = model_.scene().objects.size();
+  }
+
+  // Runs until the window is closed, the user quits or the frame count is reached; returns the
+  // process exit code.
+  int run() {
+    for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
+      glfwPollEvents();
+      take_script_events();
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      input_.write_to_imgui();
+      ImGui::NewFrame();
+      const Vec2 win = window_size(window_);
+      update_session();
+      const ToolInput ti = tool_input(win);
+      sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
+      route_input(model_, routing_, input_, ti, win, renderer_.camera(), knot_panels_);
+      draw_panels(win);
+      ImGui::Render();
+      const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
+      draw_scene_and_shots(last);
+      if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
+      model_.knot_panel_name = knot_panels_.shown_name();
+      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, path, renderer_.camera(), win, frame);
+      dumps_.clear();
+      glfwSwapBuffers(window_);
+      if (last) break;
+    }
+    if (!model_.pending_restore && options_.autosave_seconds > 0) autosaver_.save_now(model_.session, true);
+    model_.session.close();
+    return exit_code_;
+  }
+
+ private:
+  // The session asks the window for what it keeps beside the document: the view and the tools'
+  // settings, for undo steps and saved sessions.
+  void connect_session() {
+    model_.audio = std::make_unique<AudioPlayer>();
+    model_.session.capture_view = [this](DocumentState& d) {
+      d.angles = model_.view.plane_angles();
+      d.trackball = model_.view.trackball();
+      d.zoom = model_.view.zoom();
+      d.settings = tool_settings(model_);
+    };
+    model_.session.restore_view = [this](const DocumentState& d) {
+      model_.view.set(d.angles, d.trackball, d.zoom);
+      apply_tool_settings(model_, d.settings);
+    };
+    model_.session.save_window = [this](SessionFile& f) {
+      f.view.base_frame = model_.view.base_frame();
+      f.view.angles = model_.view.plane_angles();
+      f.view.trackball = model_.view.trackball();
+      f.view.zoom = model_.view.zoom();
+      f.tool = model_.active_tool()->name();
+      f.tool_settings = tool_settings(model_);
+    };
+    model_.session_options.device = options_.device.empty() ? "mouse" : options_.device;
+  }
+
+  void open_first() {
+    Panels::open(model_, options_.open_spec.empty() ? "clifford-torus" : options_.open_spec);
+    if (!model_.error.empty() && !options_.open_spec.empty()) {
+      std::cerr << "shadow4d: " << model_.error << "\n";
+      exit_code_ = 1;
+    }
+    if (model_.session_options.device != "mouse") haptics_.open() = true;
+  }
+
+  // A run that did not quit normally left an autosave: offered (or, with --restore, taken up).
+  void offer_unfinished_autosave() {
+    model_.autosave_path = autosaver_.path().string();
+    std::string why;
+    if (auto saved = unfinished_autosave(autosaver_.path(), &why)) {
+      if (options_.restore) Panels::open_session(model_, *saved, autosaver_.path().string());
+      else model_.pending_restore = std::move(saved);
+    } else if (!why.empty()) {
+      model_.status = why;
+    } else if (options_.restore) {
+      model_.status = "nothing to restore: the last run quit normally (" + autosaver_.path().string() + ")";
     }
   }
+
+  // [SECTION] scripted commands
+  // The input file's clock stands still while a restored state (an undo, a redo) is on its way to
+  // the simulation, as a user's next move comes after they see it, whatever the machine; and while
+  // a `wait` holds for the panels' background work.
+  void take_script_events() {
+    if (waiting_ && (!knot_panels_.busy() || std::chrono::steady_clock::now() - wait_start_ > std::chrono::seconds(60)))
+      waiting_ = false;
+    if (!waiting_ && (!model_.session.state_pending() || ++waited_ > kMaxStateWaitFrames)) {
+      ++script_frame_;
+      waited_ = 0;
+    }
+    for (const InputEvent& e : input_.begin_frame(script_frame_)) {
+      if (e.kind == InputEvent::Kind::open) Panels::open(model_, e.text);
+      else if (e.kind == InputEvent::Kind::shot) shots_.push_back(e.text);
+      else if (e.kind == InputEvent::Kind::dump) dumps_.push_back(e.text);
+      else if (e.kind == InputEvent::Kind::quit) model_.quit = true;
+      else if (e.kind == InputEvent::Kind::wait) waiting_ = true, wait_start_ = std::chrono::steady_clock::now();
+      else if (e.kind == InputEvent::Kind::move_to_vertex)
+        move_to_vertex(input_, model_, e, renderer_.camera(), window_size(window_));
+    }
+  }
+
+  void update_session() {
+    model_.session.refresh();
+    if (!model_.pending_settings.empty() && model_.session.snapshot()) {  // a session's hand settings
+      const ToolSettings pending = std::exchange(model_.pending_settings, {});
+      apply_tool_settings(model_, pending);
+    }
+    if (model_.scene().objects.size() != objects_seen_) {  // a sketched ribbon: keep it in view
+      objects_seen_ = model_.scene().objects.size();
+      model_.fit = enclosing(model_.fit, fit_of(model_.scene()));
+    }
+    model_.view.apply_to(model_.scene());
+    frame_the_fit(model_);
+  }
+
+  ToolInput tool_input(const Vec2& win) {
+    ToolInput ti;
+    ti.view = tool_view(renderer_.camera(), input_.cursor(), win, model_.session.scene().frame);
+    ti.shift = input_.shift();
+    ti.ctrl = input_.ctrl();
+    ti.alt = input_.alt();
+    ti.time = glfwGetTime();
+    return ti;
+  }
+
+  void draw_panels(const Vec2& win) {
+    const Camera& camera = renderer_.camera();
+    panels_.draw(model_, ImGui::GetIO().Framerate);
+    knot_panels_.draw(model_, Frame<3>(camera.orientation.normalized().toRotationMatrix()));
+    if (model_.open_knot_table) {
+      model_.open_knot_table = false;
+      knot_panels_.open_table();
+    }
+    if (model_.open_haptics) {
+      model_.open_haptics = false;
+      haptics_.open() = true;
+    }
+    haptics_.draw(model_.session);
+    explore_panel(model_);
+    if (Tool* tool = model_.active_tool(); tool && !model_.touch_and_sound_only) {
+      Overlay overlay;
+      tool->overlay(overlay, model_.session);
+      draw_overlay(overlay, camera, win);
+    }
+    knot_panels_.overlay(model_, camera, win);
+  }
+
+  // The scene, then the panels over it; the screenshots asked for this frame.
+  void draw_scene_and_shots(bool last) {
+    int fw = 0, fh = 0;
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    if (fw > 0 && fh > 0) {
+      try {
+        renderer_.draw(model_.scene(), fw, fh);
+        model_.intersections = renderer_.intersections();
+        if (model_.touch_and_sound_only) {  // drawn for the panels' numbers, then hidden
+          const Vec3f bg = model_.scene().view.background;
+          glClearColor(bg.x(), bg.y(), bg.z(), 1.0f);
+          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        }
+      } catch (const std::exception& e) {
+        model_.error = e.what();
+      }
+      if (model_.want_screenshot) {  // the picture without the panels
+        model_.want_screenshot = false;
+        save_shot(renderer_.read_pixels(fw, fh), model_.screenshot_path, model_);
+      }
+    }
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (last && !options_.window_shot.empty()) shots_.push_back(options_.window_shot);
+    for (const std::string& path : shots_) {
+      try {
+        write_png(renderer_.read_pixels(fw, fh), path);
+        std::cout << path << "\n";
+      } catch (const std::exception& e) {
+        std::cerr << "shadow4d: " << e.what() << "\n";
+        exit_code_ = 1;
+      }
+    }
+    shots_.clear();
+  }
+
+  GLFWwindow* window_;
+  const GuiOptions& options_;
+  WindowInput input_;
+  Renderer renderer_;
+  Panels panels_;
+  HapticsWindow haptics_;
+  KnotPanels knot_panels_;
+  GuiModel model_;
+  Autosaver autosaver_;
+  Routing routing_;
+  Frame<4> sent_frame_;
+  DeviceMapping sent_mapping_;
+  std::vector<std::string> shots_, dumps_;
+  std::size_t objects_seen_ = 0;
+  int script_frame_ = 0, waited_ = 0;
+  bool waiting_ = false;
+  std::chrono::steady_clock::time_point wait_start_{};
+  int exit_code_ = 0;
+};
+
+// A window with an OpenGL 3.3 core context, or null (said on stderr).
+GLFWwindow* create_window(const GuiOptions& options) {
   glfwSetErrorCallback(glfw_error);
   // A busy X server can refuse a connection for a moment (seen once in 30 window runs under one
   // Xvfb, the next run connecting fine): two more tries half a second apart before giving up.
@@ -433,7 +511,7 @@ int run_gui_app(const GuiOptions& options) {
   }
   if (!initialised) {
     std::cerr << "shadow4d: cannot open a window (glfwInit failed); try `shadow4d demo`\n";
-    return 1;
+    return nullptr;
   }
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -444,184 +522,37 @@ int run_gui_app(const GuiOptions& options) {
   if (!window) {
     std::cerr << "shadow4d: cannot create an OpenGL 3.3 window; try `shadow4d demo`\n";
     glfwTerminate();
-    return 1;
+    return nullptr;
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
+  return window;
+}
 
+}  // namespace
+
+int run_gui_app(const GuiOptions& options) {
+  std::vector<InputEvent> script;
+  if (!options.input.empty()) {
+    try {
+      script = read_input_file(options.input);
+    } catch (const std::exception& e) {
+      std::cerr << "shadow4d: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  GLFWwindow* window = create_window(options);
+  if (!window) return 1;
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, false);  // WindowInput installs the callbacks
   ImGui_ImplOpenGL3_Init("#version 330 core");
-
   int exit_code = 0;
   {
-    WindowInput input;
-    input.attach(window);
-    input.set_script(std::move(script));
-    Renderer renderer;
-    Panels panels;
-    HapticsWindow haptics;
-    KnotPanels knot_panels(options.exercise_seed);
-    GuiModel model;
-    model.audio = std::make_unique<AudioPlayer>();
-    model.session.capture_view = [&model](DocumentState& d) {
-      d.angles = model.view.plane_angles();
-      d.trackball = model.view.trackball();
-      d.zoom = model.view.zoom();
-      d.settings = tool_settings(model);
-    };
-    model.session.restore_view = [&model](const DocumentState& d) {
-      model.view.set(d.angles, d.trackball, d.zoom);
-      apply_tool_settings(model, d.settings);
-    };
-    model.session.save_window = [&model](SessionFile& f) {
-      f.view.base_frame = model.view.base_frame();
-      f.view.angles = model.view.plane_angles();
-      f.view.trackball = model.view.trackball();
-      f.view.zoom = model.view.zoom();
-      f.tool = model.active_tool()->name();
-      f.tool_settings = tool_settings(model);
-    };
-    model.session_options.device = options.device.empty() ? "mouse" : options.device;
-    Panels::open(model, options.open_spec.empty() ? "clifford-torus" : options.open_spec);
-    if (!model.error.empty() && !options.open_spec.empty()) {
-      std::cerr << "shadow4d: " << model.error << "\n";
-      exit_code = 1;
-    }
-    if (model.session_options.device != "mouse") haptics.open() = true;
-    Autosaver autosaver({options.autosave, options.autosave_seconds, 3});
-    model.autosave_path = autosaver.path().string();
-    {
-      std::string why;
-      if (auto saved = unfinished_autosave(autosaver.path(), &why)) {
-        if (options.restore) Panels::open_session(model, *saved, autosaver.path().string());
-        else model.pending_restore = std::move(saved);
-      } else if (!why.empty()) {
-        model.status = why;
-      } else if (options.restore) {
-        model.status = "nothing to restore: the last run quit normally (" + autosaver.path().string() + ")";
-      }
-    }
-    Routing routing;
-    Frame<4> sent_frame;
-    sent_frame.rotate(Plane{0, 1}, 1.0);  // anything but the scene's: the first frame is sent
-    DeviceMapping sent_mapping;
-    sent_mapping.metres_per_unit = -1;
-    std::vector<std::string> shots, dumps;
-    std::size_t objects_seen = model.scene().objects.size();
-    // The input file's clock: it stands still while a restored state (an undo, a redo) is on its
-    // way to the simulation, as a user's next move comes after they see it, whatever the machine;
-    // and while a `wait` holds for the panels' background work.
-    int script_frame = 0, waited = 0;
-    bool waiting = false;
-    std::chrono::steady_clock::time_point wait_start{};
-    for (int frame = 1; !glfwWindowShouldClose(window) && !model.quit; ++frame) {
-      glfwPollEvents();
-      if (waiting && (!knot_panels.busy() || std::chrono::steady_clock::now() - wait_start > std::chrono::seconds(60)))
-        waiting = false;
-      if (!waiting && (!model.session.state_pending() || ++waited > kMaxStateWaitFrames)) {
-        ++script_frame;
-        waited = 0;
-      }
-      for (const InputEvent& e : input.begin_frame(script_frame)) {
-        if (e.kind == InputEvent::Kind::open) Panels::open(model, e.text);
-        else if (e.kind == InputEvent::Kind::shot) shots.push_back(e.text);
-        else if (e.kind == InputEvent::Kind::dump) dumps.push_back(e.text);
-        else if (e.kind == InputEvent::Kind::quit) model.quit = true;
-        else if (e.kind == InputEvent::Kind::wait) waiting = true, wait_start = std::chrono::steady_clock::now();
-        else if (e.kind == InputEvent::Kind::move_to_vertex) move_to_vertex(input, model, e, renderer.camera(), window_size(window));
-      }
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      input.write_to_imgui();
-      ImGui::NewFrame();
-
-      model.session.refresh();
-      if (!model.pending_settings.empty() && model.session.snapshot()) {  // a session's hand settings
-        const ToolSettings pending = std::exchange(model.pending_settings, {});
-        apply_tool_settings(model, pending);
-      }
-      if (model.scene().objects.size() != objects_seen) {  // a sketched ribbon: keep it in view
-        objects_seen = model.scene().objects.size();
-        model.fit = enclosing(model.fit, fit_of(model.scene()));
-      }
-      model.view.apply_to(model.scene());
-      frame_the_fit(model);
-
-      const Vec2 win = window_size(window);
-      const Camera& camera = renderer.camera();
-      ToolInput ti;
-      ti.view = tool_view(camera, input.cursor(), win, model.scene().frame);
-      ti.shift = input.shift();
-      ti.ctrl = input.ctrl();
-      ti.alt = input.alt();
-      ti.time = glfwGetTime();
-      sync_view(model, camera, sent_frame, sent_mapping);
-      route_input(model, routing, input, ti, win, camera, knot_panels);
-      panels.draw(model, ImGui::GetIO().Framerate);
-      knot_panels.draw(model, Frame<3>(camera.orientation.normalized().toRotationMatrix()));
-      if (model.open_knot_table) {
-        model.open_knot_table = false;
-        knot_panels.open_table();
-      }
-      if (model.open_haptics) {
-        model.open_haptics = false;
-        haptics.open() = true;
-      }
-      haptics.draw(model.session);
-      explore_panel(model);
-      if (Tool* tool = model.active_tool(); tool && !model.touch_and_sound_only) {
-        Overlay overlay;
-        tool->overlay(overlay, model.session);
-        draw_overlay(overlay, camera, win);
-      }
-      knot_panels.overlay(model, camera, win);
-      ImGui::Render();
-
-      int fw = 0, fh = 0;
-      glfwGetFramebufferSize(window, &fw, &fh);
-      if (fw > 0 && fh > 0) {
-        try {
-          renderer.draw(model.scene(), fw, fh);
-          model.intersections = renderer.intersections();
-          if (model.touch_and_sound_only) {  // drawn for the panels' numbers, then hidden
-            const Vec3f bg = model.scene().view.background;
-            glClearColor(bg.x(), bg.y(), bg.z(), 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-          }
-        } catch (const std::exception& e) {
-          model.error = e.what();
-        }
-        if (model.want_screenshot) {  // the picture without the panels
-          model.want_screenshot = false;
-          save_shot(renderer.read_pixels(fw, fh), model.screenshot_path, model);
-        }
-      }
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      const bool last = (options.frames > 0 && frame >= options.frames) || model.quit;
-      if (last && !options.window_shot.empty()) shots.push_back(options.window_shot);
-      for (const std::string& path : shots) {
-        try {
-          write_png(renderer.read_pixels(fw, fh), path);
-          std::cout << path << "\n";
-        } catch (const std::exception& e) {
-          std::cerr << "shadow4d: " << e.what() << "\n";
-          exit_code = 1;
-        }
-      }
-      shots.clear();
-      if (!model.pending_restore) autosaver.tick(model.session, std::chrono::steady_clock::now());
-      model.knot_panel_name = knot_panels.shown_name();
-      for (const std::string& path : dumps) dump_state(model, knot_panels, path, camera, win, frame);
-      dumps.clear();
-      glfwSwapBuffers(window);
-      if (last) break;
-    }
-    if (!model.pending_restore && options.autosave_seconds > 0) autosaver.save_now(model.session, true);
-    model.session.close();
+    GuiApp app(window, options, std::move(script));
+    exit_code = app.run();
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

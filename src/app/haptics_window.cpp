@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "interact/session.hpp"
+#include "interact/session/session.hpp"
 
 namespace s4d {
 

@@ -13,7 +13,7 @@
 
 #include "app/panels.hpp"
 #include "knots/knot_diagram.hpp"
-#include "interact/view_crossings.hpp"
+#include "view/view_crossings.hpp"
 
 namespace s4d {
 

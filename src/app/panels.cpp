@@ -10,7 +10,7 @@
 #include "app/panel_settings.hpp"
 #include "app/tool_settings.hpp"
 #include "core/error.hpp"
-#include "interact/live_simulation.hpp"
+#include "interact/live/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "render/diagram_export.hpp"
 
@@ -30,20 +30,11 @@ ViewFit fit_of(const Scene& scene) {
   ViewFit f;
   std::vector<Vec4> pts;
   for (const SceneObject& o : scene.objects)
-    std::visit([&](const auto& s) {
-      using T = std::decay_t<decltype(s)>;
-      auto add = [&](const auto& p) {
-        Vec4 q = Vec4::Zero();
-        q.template head<T::kDim>() = p;
-        pts.push_back(q);
-      };
-      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-        for (const auto& p : s.vertices) add(p);
-      } else {
-        for (const auto& c : s.components)
-          for (const auto& p : c.points) add(p);
-      }
-    }, o.shape);
+    for_each_point(o.shape, [&](const auto& p) {
+      Vec4 q = Vec4::Zero();
+      q.head(p.size()) = p;
+      pts.push_back(q);
+    });
   if (pts.empty()) return f;
   Vec4 lo = pts[0], hi = pts[0];
   for (const Vec4& p : pts) {

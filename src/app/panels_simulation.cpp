@@ -1,5 +1,6 @@
 // The simulation panel (play, physics, the hand, status), the scenario banner, the ribbon and
 // history panels, the restore dialog and the generator dialog.
+// Sections: [SECTION] Simulation panel, [SECTION] Scenario banner, [SECTION] Generator dialog
 #include "app/panels.hpp"
 
 #include <imgui.h>
@@ -7,7 +8,7 @@
 #include <cmath>
 
 #include "app/panel_settings.hpp"
-#include "interact/live_simulation.hpp"
+#include "interact/live/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "scenario/world_builder.hpp"
 
@@ -47,26 +48,26 @@ void Panels::simulation_panel(GuiModel& model) {
   }
   const HapticSnapshot* snap = session.snapshot();
   const SceneStatus st = snap ? snap->status : SceneStatus{};
-  if (ImGui::Button(st.playing ? "Pause" : "Play")) session.send(live_command(st.playing ? LiveCode::kPause : LiveCode::kPlay));
+  if (ImGui::Button(st.playing ? "Pause" : "Play")) session.send(st.playing ? live::Request(live::Pause{}) : live::Request(live::Play{}));
   ImGui::SameLine();
-  if (ImGui::Button("Step")) session.send(live_command(LiveCode::kStepOnce));
+  if (ImGui::Button("Step")) session.send(live::StepOnce{});
   ImGui::SameLine();
   if (ImGui::Button("Reset")) {
     session.record("reset the simulation");
-    session.send(live_command(LiveCode::kReset));
+    session.send(live::Reset{});
   }
   if (session.scenario()) {
     ImGui::SameLine();
     if (!st.script_running) {
-      if (ImGui::Button("Play script")) session.send(live_command(LiveCode::kPlayScript));
+      if (ImGui::Button("Play script")) session.send(live::PlayScript{});
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("from the start, the scenario's scripted hand does it (as shadow4d run does)");
     } else if (ImGui::Button("Stop script")) {
-      session.send(live_command(LiveCode::kStopScript));
+      session.send(live::StopScript{});
     }
   }
   float scale_before = model.time_scale;
   if (ImGui::SliderFloat("time scale", &model.time_scale, 0.05f, 2.0f, "%.2fx", ImGuiSliderFlags_Logarithmic))
-    session.send(live_time_scale(model.time_scale));
+    session.send(live::SetTimeScale{model.time_scale});
   record_tool_setting(model, "change the time scale", [&] { std::swap(model.time_scale, scale_before); });
   if (curves_are_bodies(model.scene())) {
     if (ImGui::Button(st.relaxing ? "Stop relaxing (L)" : "Relax (L)")) toggle_relax(model);
@@ -133,7 +134,7 @@ void Panels::simulation_panel(GuiModel& model) {
   }
   const auto now = std::chrono::steady_clock::now();
   if (released || (changed && now - last_settings_send_ > std::chrono::milliseconds(150))) {
-    session.send(live_settings(p));
+    session.send(live::SetPhysics::from(p));
     last_settings_send_ = now;
   }
   if (st.message[0]) ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "%s", st.message);
@@ -182,7 +183,7 @@ void Panels::simulation_panel(GuiModel& model) {
   ImGui::SameLine();
   if (ImGui::SmallButton("clear pins")) {
     session.record("clear the pins");
-    session.send(live_command(LiveCode::kClearPins));
+    session.send(live::ClearPins{});
   }
   if (st.held_vertex >= 0)
     ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex,

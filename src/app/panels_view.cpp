@@ -1,4 +1,5 @@
 // The view panel (4D rotation, drawing, sound) and the scene panel (objects, their knot names).
+// Sections: [SECTION] View panel, [SECTION] Scene panel
 #include "app/panels.hpp"
 
 #include <imgui.h>
@@ -6,7 +7,7 @@
 #include <cmath>
 
 #include "app/panel_settings.hpp"
-#include "interact/live_simulation.hpp"
+#include "interact/live/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "render/diagram_export.hpp"
 #include "scenario/world_builder.hpp"
@@ -201,7 +202,7 @@ void Panels::toggle_relax(GuiModel& model) {
   }
   const bool on = s.snapshot() && s.snapshot()->status.relaxing;
   if (!on) s.record("relax the knot");
-  s.send(live_relax(!on));
+  s.send(on ? live::Request(live::StopRelaxing{}) : live::Request(live::StartRelaxing{}));
   model.status = on ? "relaxing stopped: the knot rests as it is"
                     : "relaxing the knot, live (L stops it); it never passes through itself, so its name stays";
 }

@@ -49,7 +49,7 @@ void apply_tool_settings(GuiModel& model, const ToolSettings& settings) {
       [&](double v) { model.grab.set_carry_radius(v); });
   get("simulation.time_scale", 0.01, 4.0, [&](double v) {
     model.time_scale = static_cast<float>(v);
-    model.session.send(live_time_scale(v));
+    model.session.send(live::SetTimeScale{v});
   });
   get("view.touch_and_sound_only", 0.0, 1.0, [&](double v) { model.touch_and_sound_only = v > 0.5; });
   if (model.audio) {

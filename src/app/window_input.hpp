@@ -4,6 +4,10 @@
 //
 // Input file: one event per line, `# comments`, each line `FRAME EVENT ARGS`:
 //   12 move X Y            cursor to window pixel (X, Y)
+//   12 move-by DX DY       cursor moved by (DX, DY) pixels from where it is
+//   12 move-to-vertex N [DX DY]  cursor to where simulated vertex N is on the screen when the
+//                          event plays (offset by DX, DY), its own sheet preferred where the
+//                          shadow folds others onto it
 //   13 press left|right|middle        14 release left|right|middle
 //   15 scroll DY           the wheel (positive: away from the user)
 //   16 key-down NAME       17 key-up NAME       18 key NAME (down and up)

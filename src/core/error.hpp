@@ -1,4 +1,4 @@
-// Typed errors thrown at the I/O edge only; engine loops never throw (see DESIGN.md).
+// Typed errors thrown at the I/O edge only; engine loops never throw (docs/architecture.md).
 #pragma once
 #include <stdexcept>
 #include <string>

@@ -1,7 +1,11 @@
 // HapticScene: what the haptic loop runs each tick (the active tool's force model plus any simulation
 // steps). The loop only knows this interface, so it runs a sticky plane, a cloth or a test double.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <new>
+#include <type_traits>
 #include <span>
 #include <string_view>
 
@@ -19,11 +23,37 @@ struct SceneParam {
 };
 
 // A request for the scene (a live simulation's tools and settings) copied through the loop's
-// queue: a code the scene defines and small payloads. Trivially copyable on purpose.
-struct SceneCommand {
-  int code = 0;
-  int i[2] = {0, 0};
-  double x[20] = {};
+// queue. The loop does not know the scene's request types: it carries one by value in a box of
+// fixed size with a tag of its type, so that nothing allocates and a scene reads back only a type
+// it knows (get<T>() is null for any other). The scene's own types say what a request means
+// (interact/live/live_requests.hpp).
+class SceneCommand {
+ public:
+  static constexpr std::size_t kCapacity = 192;  // bytes: the largest request of any scene fits
+
+  SceneCommand() = default;
+  template <class T>
+  static SceneCommand of(const T& request) {
+    static_assert(std::is_trivially_copyable_v<T>, "a scene's request crosses threads as bytes");
+    static_assert(sizeof(T) <= kCapacity && alignof(T) <= alignof(std::max_align_t), "raise kCapacity");
+    SceneCommand c;
+    c.type_ = &kTag<T>;
+    std::memcpy(c.bytes_, &request, sizeof(T));
+    return c;
+  }
+  // The request when it is a T, else null.
+  template <class T>
+  const T* get() const {
+    return type_ == &kTag<T> ? std::launder(reinterpret_cast<const T*>(bytes_)) : nullptr;
+  }
+  bool empty() const { return type_ == nullptr; }
+
+ private:
+  template <class T>
+  static constexpr char kTag = 0;  // one address per type: the type's tag
+
+  const void* type_ = nullptr;
+  alignas(std::max_align_t) std::byte bytes_[kCapacity] = {};
 };
 
 // Something the hand met, for sound cues and marks (the explorer passing an intersection curve

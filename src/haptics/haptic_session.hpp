@@ -1,6 +1,6 @@
 // The scripted hand shared by `shadow4d haptics`, its benchmark and the headless mouse: circles
 // drawn on the sticky plane or on the cloth vertex it holds. (The scenes by name are the interact
-// layer's: interact/haptic_scenes.hpp.)
+// layer's: interact/live/haptic_scenes.hpp.)
 #pragma once
 #include "core/vec.hpp"
 

@@ -1,6 +1,7 @@
 // The drawing: half-edges from the PD code, faces by walking them, the barycentric subdivision
 // (crossings, edge midpoints, face centres), Tutte's embedding with the largest simple face
 // outside, strands along crossing -> edge midpoint -> crossing, depth +-h at each crossing.
+// Sections: [SECTION] faces, [SECTION] drawing
 #include "knots/diagram_embedding.hpp"
 
 #include <Eigen/Dense>

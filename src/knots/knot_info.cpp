@@ -1,5 +1,6 @@
 // The live panel's engine: identification in the given view, the panel's texts, and the further
 // invariants (covers, Reidemeister search, solid-torus recognition) where candidates remain.
+// Sections: [SECTION] texts, [SECTION] further invariants, [SECTION] worker
 #include "knots/knot_info.hpp"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // Resolving table names to diagrams and curves: Rolfsen knots from their braid words, the other
 // census knots from the minimal diagram whose signature the index keeps, torus knots on a torus,
 // links from the link table's PD codes.
+// Sections: [SECTION] names, [SECTION] resolving
 #include "knots/knot_table.hpp"
 
 #include <algorithm>

@@ -9,20 +9,11 @@
 #include "core/error.hpp"
 #include "knots/depth_edit.hpp"
 #include "knots/knot_diagram.hpp"
+#include "knots/segments_cross.hpp"
 
 namespace s4d {
 
 namespace {
-
-// Where segments p0p1 and q0q1 cross at interior points: their parameters.
-bool segments_cross(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1, double& s, double& t) {
-  const Vec2 r = p1 - p0, d = q1 - q0, w = q0 - p0;
-  const double den = r.x() * d.y() - r.y() * d.x();
-  if (den == 0) return false;
-  s = (w.x() * d.y() - w.y() * d.x()) / den;
-  t = (w.x() * r.y() - w.y() * r.x()) / den;
-  return s > 0 && s < 1 && t > 0 && t < 1;
-}
 
 struct StrokePassage {
   double t;      // along its segment

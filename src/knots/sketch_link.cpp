@@ -11,19 +11,10 @@
 #include "core/error.hpp"
 #include "knots/depth_edit.hpp"
 #include "knots/knot_diagram.hpp"
+#include "knots/segments_cross.hpp"
 
 namespace s4d {
 namespace {
-
-// Where segments p0p1 and q0q1 cross at interior points: their parameters.
-bool cross(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1, double& s, double& t) {
-  const Vec2 r = p1 - p0, d = q1 - q0, w = q0 - p0;
-  const double den = r.x() * d.y() - r.y() * d.x();
-  if (den == 0) return false;
-  s = (w.x() * d.y() - w.y() * d.x()) / den;
-  t = (w.x() * r.y() - w.y() * r.x()) / den;
-  return s > 0 && s < 1 && t > 0 && t < 1;
-}
 
 struct StrokeSeg {
   int comp = 0, index = 0;  // from point `index` to the next (the last one closes the component)
@@ -104,7 +95,7 @@ StrokeLink link_from_strokes(std::span<const StrokeComponent> strokes, std::span
         if (b.index == a.index + 1 || (a.index == 0 && b.index == m - 1)) continue;  // neighbours
       }
       double s = 0, t = 0;
-      if (!cross(a.a, a.b, b.a, b.b, s, t)) continue;
+      if (!segments_cross(a.a, a.b, b.a, b.b, s, t)) continue;
       const bool later_under = choice_at(b, (1 - t) * b.a + t * b.b) == CrossChoice::kUnder;
       DepthConstraint k;
       k.gap = lift;
@@ -122,7 +113,7 @@ StrokeLink link_from_strokes(std::span<const StrokeComponent> strokes, std::span
       for (std::size_t k = 0; k + (f.closed ? 0 : 1) < m; ++k) {
         const Vec2 &q0 = f.points[k], &q1 = f.points[(k + 1) % m];
         double s = 0, t = 0;
-        if (!cross(a.a, a.b, q0, q1, s, t)) continue;
+        if (!segments_cross(a.a, a.b, q0, q1, s, t)) continue;
         const double d = (1 - t) * f.depth[k] + t * f.depth[(k + 1) % m];
         const bool under = choice_at(a, (1 - s) * a.a + s * a.b) == CrossChoice::kUnder;
         DepthConstraint c;

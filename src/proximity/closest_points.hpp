@@ -1,5 +1,7 @@
 // Exact closest points between simplices (point, segment, triangle) in R^D, any D >= 2: the
 // distance kernel under every force, contact and "no pass-through" check of the engine.
+// Sections: [SECTION] Implementation details, [SECTION] Public closest-point functions,
+// [SECTION] Active set
 #pragma once
 #include <array>
 #include <cmath>

@@ -1,4 +1,6 @@
 // The motion kernels of the coherent self queries (see motion_kernels.hpp), portable and AVX.
+// Sections: [SECTION] Displacement fields, [SECTION] Gaps along a stored axis,
+// [SECTION] Motion since a snapshot, [SECTION] Edge changes of the ring bounds
 #include "proximity/motion_kernels.hpp"
 
 #include <algorithm>

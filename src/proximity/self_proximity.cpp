@@ -1,5 +1,7 @@
 // Self-proximity of one mesh: leaf masks of topological neighbours, the list, the ring and the
 // fringe (see self_proximity.hpp for why each bound holds), and the cold fall-backs.
+// Sections: [SECTION] Broad phase, [SECTION] Motion since the build, [SECTION] Testing a pair,
+// [SECTION] Queries
 #include "proximity/self_proximity.hpp"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
-#include "interact/view_crossings.hpp"
+#include "view/view_crossings.hpp"
 #include "io/scene.hpp"
 #include "render/geometry.hpp"
 

@@ -8,7 +8,7 @@
 #include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
 #include "core/camera.hpp"
-#include "interact/view_crossings.hpp"
+#include "view/view_crossings.hpp"
 #include "render/curve_diagram.hpp"
 #include "render/geometry.hpp"
 

@@ -32,13 +32,6 @@ int curve_dimension(const Scene& scene) {
   return dim;
 }
 
-int shape_vertex_count(const Shape& shape) {
-  return std::visit([](const auto& s) -> int {
-    using T = std::decay_t<decltype(s)>;
-    if constexpr (std::is_same_v<T, Surface<T::kDim>>) return static_cast<int>(s.vertices.size());
-    else return static_cast<int>(s.point_count());
-  }, shape);
-}
 
 // An edge of more than two triangles has no side to push along: the physics would be wrong.
 template <int D>
@@ -92,7 +85,7 @@ void body_vertex_ranges(const Scene& scene, std::vector<int>& first, std::vector
     const Shape& shape = scene.objects[o].shape;
     if (!curves && !is_surface(shape)) continue;
     first[o] = nv;
-    count[o] = shape_vertex_count(shape);
+    count[o] = point_count(shape);
     nv += count[o];
   }
 }
@@ -189,38 +182,30 @@ void SceneWorld<D>::apply_settings(const PhysicsSettings& settings) {
   world.set_model(std::move(model));
 }
 
-template <int D>
-void copy_positions_into(const SceneWorld<D>& sw, std::span<const Vec<D>> x, Scene& scene) {
-  for (std::size_t o = 0; o < scene.objects.size() && o < sw.first.size(); ++o) {
-    if (sw.first[o] < 0) continue;
-    const int f = sw.first[o];
-    if constexpr (D == 4) {  // an object of R^3 moved by a world of R^4 may leave w = 0
-      Shape& shape = scene.objects[o].shape;
+void copy_positions_into(std::span<const int> first, std::span<const int> count, std::span<const double> x, int dim,
+                         Scene& scene) {
+  for (std::size_t o = 0; o < scene.objects.size() && o < first.size() && o < count.size(); ++o) {
+    if (first[o] < 0) continue;
+    Shape& shape = scene.objects[o].shape;
+    if (ambient_dim(shape) > dim) continue;  // a world of R^3 holds no object of R^4
+    if (dim == 4) {  // an object of R^3 moved by a world of R^4 may leave w = 0
       if (const auto* s3 = std::get_if<Surface<3>>(&shape)) shape = lift_to_4d(*s3);
       else if (const auto* c3 = std::get_if<Curve<3>>(&shape)) shape = lift_to_4d(*c3);
     }
     int i = 0;
-    auto put = [&](auto& p) {
-      if (i >= sw.count[o]) return;
-      const auto& q = x[static_cast<std::size_t>(f + i++)];
-      using P = std::decay_t<decltype(p)>;
-      if constexpr (P::RowsAtCompileTime == D) p = q;
-      else p.template head<D>() = q.template head<D>();
-    };
-    std::visit(
-        [&](auto& s) {
-          using T = std::decay_t<decltype(s)>;
-          if constexpr (T::kDim >= D) {  // a world of R^3 holds no object of R^4
-            if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-              for (auto& p : s.vertices) put(p);
-            } else {
-              for (auto& c : s.components)
-                for (auto& p : c.points) put(p);
-            }
-          }
-        },
-        scene.objects[o].shape);
+    for_each_point(shape, [&](auto& p) {
+      if (i >= count[o]) return;
+      const std::size_t at = static_cast<std::size_t>(first[o] + i++) * static_cast<std::size_t>(dim);
+      if (at + static_cast<std::size_t>(dim) > x.size()) return;
+      for (int k = 0; k < dim; ++k) p[k] = x[at + static_cast<std::size_t>(k)];
+    });
   }
+}
+
+template <int D>
+void copy_positions_into(const SceneWorld<D>& sw, std::span<const Vec<D>> x, Scene& scene) {
+  const std::span<const double> flat(x.empty() ? nullptr : x.front().data(), x.size() * D);
+  copy_positions_into(sw.first, sw.count, flat, D, scene);
 }
 
 #define S4D_INSTANTIATE(D)                                                                 \

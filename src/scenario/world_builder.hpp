@@ -58,5 +58,9 @@ SceneWorld<D> build_world(const Scene& scene);
 // lifted to R^4 (it may have left w = 0). For drawing and saving.
 template <int D>
 void copy_positions_into(const SceneWorld<D>& sw, std::span<const Vec<D>> x, Scene& scene);
+// The same from a flat state of any dimension (nv × dim values, a snapshot's) and the ranges
+// body_vertex_ranges gives; points beyond the end of `x` are left as they are.
+void copy_positions_into(std::span<const int> first, std::span<const int> count, std::span<const double> x, int dim,
+                         Scene& scene);
 
 }  // namespace s4d

@@ -11,16 +11,6 @@ namespace s4d {
 
 namespace {
 
-template <typename T>
-void for_each_point(T& s, auto&& f) {
-  if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
-    for (auto& p : s.vertices) f(p);
-  } else {
-    for (auto& comp : s.components)
-      for (auto& p : comp.points) f(p);
-  }
-}
-
 Shape lifted(Shape shape) {
   if (auto* c = std::get_if<Curve<3>>(&shape)) return lift_to_4d(*c);
   if (auto* s = std::get_if<Surface<3>>(&shape)) return lift_to_4d(*s);

@@ -1,6 +1,7 @@
 // The link table: Thistlethwaite's links load with the standard counts, resolve in KnotInfo's
 // spellings, agree with knotpy's HOMFLY-PT data, and every one of them is named back as itself;
 // split and composite links are said to lie outside the table.
+// Sections: [SECTION] HOMFLY-PT against knotpy's own data, [SECTION] naming back
 #include "knots/link_table.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Changing a crossing through the view: only that crossing changes, on the screen everything stays,
 // and the trefoil with one crossing changed is the unknot.
-#include "interact/view_edit.hpp"
+#include "interact/tools/view_edit.hpp"
 #include "render/scene_geometry.hpp"
 
 #include <gtest/gtest.h>

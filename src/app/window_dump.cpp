@@ -1,0 +1,157 @@
+// The input file's `dump` (see window_dump.hpp).
+#include "app/window_dump.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "app/screen.hpp"
+#include "app/tool_settings.hpp"
+
+namespace s4d {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The live simulation: its status, every vertex (world coordinates) and where its shadow is on the
+// screen (null when behind the eye), for tests that press on a chosen vertex.
+void dump_simulation(Json& j, Session& s, const Camera& camera, const Vec2& window) {
+  j["simulating"] = s.simulating();
+  j["state_pending"] = s.state_pending();
+  j["physics_error"] = s.physics_error();
+  if (const HapticSnapshot* snap = s.snapshot()) {
+    const SceneStatus& st = snap->status;
+    j["sim_time"] = st.sim_time;
+    j["sim_steps"] = st.sim_steps;
+    j["playing"] = st.playing;
+    j["held_vertex"] = st.held_vertex;
+    j["grab_mode"] = st.grab_mode;
+    j["pinned"] = st.pinned;
+    j["contacts"] = st.contacts;
+    j["rollbacks"] = st.rollbacks;
+    j["device"] = snap->device_name;
+    j["max_force_output"] = snap->max_force_output;
+    j["safety_nonfinite"] = snap->safety.nonfinite;
+    j["loop_period_p999_us"] = snap->period.p999_us;
+    j["dim"] = snap->point_dimension;
+    j["positions"] = snap->points;
+    j["band_force"] = st.band_force;
+    Json pins = Json::array();
+    for (std::size_t v = 0; v < snap->flags.size(); ++v)
+      if (snap->flags[v] & 1) pins.push_back(v);
+    j["pinned_vertices"] = pins;
+    j["carry_radius"] = st.carry_radius;
+    Json pixels = Json::array();
+    const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
+    for (int v = 0; v < nv; ++v) {
+      ImVec2 px;
+      const Vec3 p = s.vertex_shadow(v);
+      pixels.push_back(to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
+    }
+    j["vertex_pixels"] = pixels;
+    j["exploring"] = st.exploring;
+    j["probe_w"] = st.probe_w;
+    j["relaxing"] = st.relaxing;
+  }
+  // The World's cells, so a test can check every saved state with a checker of its own.
+  Json tris = Json::array();
+  for (const Triangle& t : s.triangles()) tris.push_back({t[0], t[1], t[2]});
+  j["triangles"] = tris;
+}
+
+// The independent checks and the scenario's verdict, live.
+void dump_checks(Json& j, const Session& s) {
+  const MonitorResult c = s.checks();
+  j["checked"] = c.valid;
+  j["true_intersections"] = c.true_intersections;
+  j["min_gap"] = std::isfinite(c.min_gap) ? Json(c.min_gap) : Json(nullptr);
+  if (c.verdict) j["verdict"] = {{"pass", c.verdict->pass}, {"detail", c.verdict->detail}};
+}
+
+// The tools' state: the explorer's passes, the last ribbon's passages, the sheets under the cursor
+// and the knot sketch.
+void dump_tools(Json& j, GuiModel& model) {
+  Session& s = model.session;
+  j["tool"] = model.active_tool()->name();
+  Json passes = Json::array();
+  for (const SceneEvent& e : model.explore.passes())
+    passes.push_back(e.kind == kEventPassedAbove ? "above" : e.kind == kEventPassedBelow ? "below" : e.kind == kEventCrossedOver ? "over" : "under");
+  j["explore_gauss"] = model.explore.gauss_so_far();
+  j["explore_passes"] = passes;
+  if (const SketchedRibbon* r = model.ribbon.last()) {
+    Json ps = Json::array();
+    for (const RibbonPassage& p : r->passages) ps.push_back(p.below ? "below" : "above");
+    j["ribbon_passages"] = ps;
+  }
+  j["hits_under_cursor"] = model.grab.hits().size();
+  Json hits = Json::array();
+  for (const SheetHit& h : model.grab.hits())
+    hits.push_back({{"w", h.w}, {"vertex", s.first_vertex(h.object) < 0 ? -1 : s.first_vertex(h.object) + h.vertex}});
+  j["hits"] = hits;
+  const SketchPublished& k = model.knot.published();
+  j["sketch"] = {{"active", k.active},
+                 {"drawing", k.drawing},
+                 {"points", k.point_count},
+                 {"components", k.component_count},
+                 {"crossings_chosen", k.crossing_count},
+                 {"blocked_ticks", k.status.blocked_ticks},
+                 {"crossings_refused", k.status.crossings_refused},
+                 {"max_repulsion", k.status.max_repulsion},
+                 {"max_lag_near", k.status.max_lag_near},
+                 {"last_gauss", model.knot.last_gauss()},
+                 {"last_name", model.knot.last_name()}};
+  j["sheet"] = model.grab.sheet();
+  j["tool_settings"] = tool_settings(model);
+}
+
+// What the view shows: its 4D frame, the drawing mode, and where the shadow's pinch points are.
+void dump_view(Json& j, GuiModel& model, const Camera& camera, const Vec2& window) {
+  const Frame<4>& f = model.scene().frame;
+  Json frame = Json::array();
+  for (int r = 0; r < 4; ++r)
+    for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
+  j["frame"] = frame;
+  j["objects"] = model.scene().objects.size();
+  if (model.intersections.computed) {
+    Json pinch = Json::array();
+    for (const Vec3& p : model.intersections.pinch_at) {
+      ImVec2 px;
+      const bool seen = to_screen(camera, p, window, px);
+      pinch.push_back({{"at", {p.x(), p.y(), p.z()}}, {"pixel", seen ? Json{px.x, px.y} : Json(nullptr)}});
+    }
+    j["pinch_points"] = pinch;
+    j["curve_length"] = model.intersections.length;
+  }
+  j["curve_mode"] = curve_mode_name(model.scene().view.curve_mode);
+  j["touch_and_sound_only"] = model.touch_and_sound_only;
+  j["depth_tone"] = model.depth_tone;
+}
+
+}  // namespace
+
+void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
+                const Vec2& window, int window_frame) {
+  Json j;
+  // The frame and the wall clock (s): two dumps give the frame rate over the frames between them.
+  j["window_frame"] = window_frame;
+  j["wall_time"] = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  j["status"] = model.status;
+  j["error"] = model.error;
+  dump_simulation(j, model.session, camera, window);
+  dump_checks(j, model.session);
+  dump_tools(j, model);
+  dump_view(j, model, camera, window);
+  j["knot_panel_name"] = model.knot_panel_name;
+  Json knot_panels = Json::object();
+  knots.dump(knot_panels);
+  j["knot_panels"] = knot_panels;
+  j["restore_offered"] = model.pending_restore.has_value();
+  j["history"] = model.session.history().done_labels();
+  std::ofstream out(path);
+  out << j.dump(1) << "\n";
+  if (!out) model.error = "cannot write " + path;
+}
+
+}  // namespace s4d

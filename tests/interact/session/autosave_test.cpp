@@ -1,0 +1,211 @@
+// Sessions saved and taken up again, autosaves on their interval, and the kill test: a headless
+// session killed with SIGKILL at random moments never leaves a half-written autosave and loses
+// nothing older than the autosave interval.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+#include <thread>
+
+#include "interact/session/autosave.hpp"
+#include "interact/live/live_simulation.hpp"
+#include "interact/session/session.hpp"
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+namespace fs = std::filesystem;
+
+Document falling_cloth() {
+  Document d;
+  d.spec = "a falling cloth";
+  SceneObject o;
+  o.name = "cloth";
+  o.shape = generate("cloth", {{"n", 8}, {"size", 1}});
+  d.scene.objects.push_back(o);
+  d.scene.physics.gravity = Vec4(0, 0, -9.81, 0);
+  return d;
+}
+
+TEST(SessionSave, TheStateComesBackInAnotherSession) {
+  Session a;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  a.open(falling_cloth(), o);
+  a.send(live::Pin{0, live::PinAction::kPin});
+  a.loop()->run_ticks(200);
+  a.refresh();
+  const SessionFile saved = parse_session(session_text(a.save_state()), "t.s4d");
+  EXPECT_EQ(saved.simulation.dim, 4);
+  EXPECT_EQ(saved.simulation.pinned, std::vector<int>{0});
+  EXPECT_TRUE(saved.simulation.playing);
+  EXPECT_NEAR(saved.simulation.time, 0.2, 1e-9);
+
+  Session b;
+  b.open_saved(saved, "t.s4d", o);
+  b.loop()->run_ticks(1);
+  b.refresh();
+  // One step later than the saved state, from the saved positions and velocities. Not bit for
+  // bit: the new World fits its contact layer to the saved state's gaps, not the start's, which
+  // moves a vertex by about 1e-6 in a step where it falls 2e-3.
+  a.loop()->run_ticks(1);
+  a.refresh();
+  ASSERT_EQ(b.snapshot()->points.size(), a.snapshot()->points.size());
+  for (std::size_t i = 0; i < a.snapshot()->points.size(); ++i)
+    EXPECT_NEAR(b.snapshot()->points[i], a.snapshot()->points[i], 1e-5) << i;
+  EXPECT_EQ(b.snapshot()->status.pinned, 1);
+  EXPECT_TRUE(b.snapshot()->status.playing) << "it was playing when saved";
+  EXPECT_NEAR(b.snapshot()->status.sim_time, 0.201, 1e-9) << "the simulated time goes on from the saved";
+}
+
+// A vertex held on the rubber band when the session was saved: written as held, and taken up
+// pinned where it was (no hand holds it now), so the shape the hand held does not spring back.
+TEST(SessionSave, AVertexHeldWhenSavedComesBackPinnedWhereItWas) {
+  Session a;
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  a.open(falling_cloth(), o);
+  a.set_mapping(DeviceMapping::fit(Vec3::Zero(), 1, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.1)));
+  a.send(live::Grab{5, live::GrabMode::kShadow, live::point(Vec3::Zero())});
+  a.loop()->run_ticks(50);
+  a.refresh();
+  ASSERT_EQ(a.snapshot()->status.held_vertex, 5);
+  const SessionFile saved = parse_session(session_text(a.save_state()), "t.s4d");
+  EXPECT_EQ(saved.simulation.held, std::vector<int>{5});
+  Session b;
+  b.open_saved(saved, "t.s4d", o);
+  b.loop()->run_ticks(1);
+  b.refresh();
+  EXPECT_TRUE(b.pinned(5));
+  EXPECT_LT(b.snapshot()->status.held_vertex, 0);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(b.snapshot()->points[5 * 4 + k], saved.simulation.positions[5 * 4 + k]);
+}
+
+TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
+  const fs::path dir = fs::temp_directory_path() / "s4d_autosave_test";
+  fs::remove_all(dir);
+  Session s;
+  SessionOptions o;
+  o.threaded = false;
+  s.open(falling_cloth(), o);
+  s.loop()->run_ticks(1);
+  s.refresh();
+  Autosaver saver({dir / "auto.s4d", 0.05, 2});
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_FALSE(saver.tick(s, t0)) << "not before the interval";
+  EXPECT_TRUE(saver.tick(s, t0 + std::chrono::milliseconds(60)));
+  EXPECT_FALSE(saver.tick(s, t0 + std::chrono::milliseconds(70)));
+  EXPECT_TRUE(saver.tick(s, t0 + std::chrono::milliseconds(130)));
+  EXPECT_TRUE(saver.save_now(s, false));
+  EXPECT_EQ(saver.saves(), 3);
+  ASSERT_TRUE(unfinished_autosave(dir / "auto.s4d").has_value()) << "the run has not quit";
+  EXPECT_TRUE(fs::exists(dir / "auto.s4d.1"));
+  EXPECT_TRUE(saver.save_now(s, true));
+  EXPECT_FALSE(unfinished_autosave(dir / "auto.s4d").has_value()) << "a clean quit offers nothing";
+  // A damaged autosave is no crash: it says why and offers nothing.
+  { std::ofstream(dir / "auto.s4d") << "{\"shadow4d_session\": 1, \"scene\": "; }
+  std::string why;
+  EXPECT_FALSE(unfinished_autosave(dir / "auto.s4d", &why).has_value());
+  EXPECT_NE(why.find("cannot be read"), std::string::npos);
+}
+
+#ifdef S4D_SANITIZED
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+
+// True when the last minute's load average is over one runnable thread per core.
+bool machine_overloaded() {
+  std::ifstream in("/proc/loadavg");
+  double load = 0;
+  if (!(in >> load)) return false;
+  return load > 1.0 * std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Needs the shadow4d binary: ctest passes it as S4D_BIN (tests/CMakeLists.txt).
+TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterval) {
+  const char* bin = std::getenv("S4D_BIN");
+  if (!bin || !*bin) GTEST_SKIP() << "S4D_BIN unset; ctest runs this as cli.session_survives_sigkill";
+  const fs::path dir = fs::temp_directory_path() / "s4d_kill_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path autosave = dir / "auto.s4d";
+  constexpr double kInterval = 0.25;  // s
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> wait_ms(300, 1200);
+  int restored = 0;
+  double last_time = -1, last_saved_at = 0;  // the autosave the previous run left
+  const int kills = std::getenv("S4D_KILLS") ? std::atoi(std::getenv("S4D_KILLS")) : 50;
+  for (int k = 0; k < kills; ++k) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      dup2(null, 1);
+      execl(bin, bin, "session", "run", "cloth:n=12", "--seconds", "1000", "--autosave", autosave.c_str(),
+            "--interval", "0.25", "--edit-every", "0.05", "--restore", "--seed", std::to_string(k).c_str(),
+            static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms(rng)));
+    const double killed_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    ASSERT_EQ(kill(pid, SIGKILL), 0);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "run " << k << " ended on its own (status " << status << ")";
+    if (!fs::exists(autosave)) continue;  // killed before its first autosave
+    // Every file there is whole: the autosave and the versions kept beside it parse.
+    for (const auto& e : fs::directory_iterator(dir)) {
+      if (e.path().string().find(".tmp") != std::string::npos) continue;  // never renamed into place
+      SCOPED_TRACE(e.path().string());
+      EXPECT_NO_THROW(read_session(e.path()));
+    }
+    const SessionFile f = read_session(autosave);
+    EXPECT_FALSE(f.clean_exit);
+    // Nothing older than the interval is lost (plus the start-up before the first save, and the
+    // write itself, for which half a second is allowed: ctest runs another test on each core
+    // beside it, and a 2-core CI machine measured 0.52 s of age once in 50 kills).
+    // On a machine loaded far beyond its cores the saver itself waits for the CPU (a starved
+    // process loses no work it has not done), so the allowance grows with the measured load.
+    const double age = killed_at - f.saved_at;
+    // The timing is the release build's to keep. An instrumented build (S4D_SANITIZED: ASan,
+    // TSan) runs here for the files' integrity and the restores: it writes several times slower,
+    // and beside another instrumented test and the child's real-time haptic thread its saver was
+    // measured waiting up to 3.2 s for the CPU.
+    const double allowance = machine_overloaded() ? 1.0 : 0.5;
+    if (restored > 0 && !kSanitized) {
+      EXPECT_LT(age, kInterval + allowance) << "run " << k;
+    }
+    EXPECT_GE(age, -0.05);
+    // Each run took up the last one's work: a new autosave goes on from its simulated time.
+    if (last_time >= 0 && f.saved_at > last_saved_at) {
+      EXPECT_GE(f.simulation.time, last_time) << "run " << k << " restored the work it was left";
+    }
+    last_time = f.simulation.time;
+    last_saved_at = f.saved_at;
+    ++restored;
+  }
+  EXPECT_GE(restored, kills * 3 / 4) << "most runs got to an autosave";
+  EXPECT_GT(last_time, 2.0) << "the simulated time adds up over the runs (each ran 0.3-1.2 s)";
+  // What the kills left half-written was never renamed into place, and the next start cleared it.
+  int temporaries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) temporaries += e.path().string().find(".tmp-") != std::string::npos;
+  EXPECT_LE(temporaries, 1) << "at most the last run's";
+}
+
+}  // namespace
+}  // namespace s4d

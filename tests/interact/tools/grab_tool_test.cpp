@@ -1,0 +1,194 @@
+// Picking and the grab tool on a headless Session: every sheet under the cursor is found in
+// order, Tab reaches each, and a press holds the vertex of the sheet chosen.
+#include <gtest/gtest.h>
+
+#include "interact/tools/grab_tool.hpp"
+#include "view/pick.hpp"
+#include "interact/session/session.hpp"
+#include "view/view_crossings.hpp"
+#include "shape/generators.hpp"
+
+namespace s4d {
+namespace {
+
+// Two unit squares in the plane z = 0 of the shadow, apart in w (one at w = +0.5, one at -0.5):
+// the shadow folds them onto each other, the surface does not meet itself.
+Scene two_sheets() {
+  Scene s;
+  for (int k = 0; k < 2; ++k) {
+    SceneObject o;
+    o.name = k == 0 ? "upper" : "lower";
+    Surface<4> c = std::get<Surface<4>>(generate("cloth", {{"n", 5}, {"size", 1}}));
+    for (Vec4& p : c.vertices) {
+      p.w() = k == 0 ? 0.5 : -0.5;
+      p.z() = k == 0 ? 0.2 : -0.2;  // and apart along the line of sight too: one is nearer the eye
+    }
+    o.shape = c;
+    s.objects.push_back(o);
+  }
+  return s;
+}
+
+TEST(Pick, EverySheetUnderTheRayNearestFirstOneHitEach) {
+  const Scene s = two_sheets();
+  // Straight down the z axis through (0.1, 0.1): both squares.
+  const std::vector<SheetHit> hits = pick_sheets(s, Vec3(0.1, 0.1, 5), Vec3(0, 0, -1));
+  ASSERT_EQ(hits.size(), 2u);
+  EXPECT_EQ(hits[0].object, 0) << "the upper square is nearer the eye (z = 0.2)";
+  EXPECT_NEAR(hits[0].distance, 4.8, 1e-12);
+  EXPECT_NEAR(hits[0].w, 0.5, 1e-12);
+  EXPECT_EQ(hits[1].object, 1);
+  EXPECT_NEAR(hits[1].w, -0.5, 1e-12);
+  // Through a grid vertex (0, 0) six triangles meet: still one hit a sheet, at that vertex.
+  const std::vector<SheetHit> at_vertex = pick_sheets(s, Vec3(0, 0, 5), Vec3(0, 0, -1));
+  ASSERT_EQ(at_vertex.size(), 2u);
+  const auto& v = std::get<Surface<4>>(s.objects[0].shape).vertices[static_cast<std::size_t>(at_vertex[0].vertex)];
+  EXPECT_NEAR(v.x(), 0, 1e-12);
+  EXPECT_NEAR(v.y(), 0, 1e-12);
+  EXPECT_TRUE(pick_sheets(s, Vec3(3, 3, 5), Vec3(0, 0, -1)).empty());
+  EXPECT_TRUE(pick_sheets(s, Vec3(0, 0, 5), Vec3(0, 0, 0)).empty()) << "no direction, no hit";
+}
+
+TEST(Pick, ObjectsOfR4AreSeenThroughTheFrame) {
+  Scene s = two_sheets();
+  s.frame.rotate(Plane{2, 3}, 1.5707963267948966);  // zw: the view's z is now the world's -w
+  const std::vector<SheetHit> hits = pick_sheets(s, Vec3(0.1, 0.1, 5), Vec3(0, 0, -1));
+  ASSERT_EQ(hits.size(), 2u);
+  EXPECT_NEAR(std::abs(hits[0].point.z()), 0.5, 1e-12) << "the sheets are now 1 apart along the line of sight";
+}
+
+TEST(GrabTool, TabReachesEverySheetAndThePressHoldsTheChosenOne) {
+  Document d;
+  d.scene = two_sheets();
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  Session session;
+  session.open(std::move(d), o);
+  ASSERT_TRUE(session.simulating()) << session.physics_error();
+  session.loop()->run_ticks(1);
+  session.refresh();
+
+  ToolInput in;
+  in.view.eye = Vec3(0.1, 0.1, 5);
+  in.view.ray = Vec3(0, 0, -1);
+  in.view.cursor = Vec2(100, 100);
+  GrabTool tool;
+  tool.hover(in, session);
+  ASSERT_EQ(tool.hits().size(), 2u);
+  EXPECT_EQ(tool.sheet(), 0);
+  tool.key(ToolKey::kTab, in, session);
+  EXPECT_EQ(tool.sheet(), 1);
+  tool.hover(in, session);
+  EXPECT_EQ(tool.sheet(), 1) << "the choice holds while the cursor stays";
+  tool.key(ToolKey::kTab, in, session);
+  EXPECT_EQ(tool.sheet(), 0) << "and wraps round";
+  tool.key(ToolKey::kTab, in, session);
+  ASSERT_TRUE(tool.press(in, session));
+  session.loop()->run_ticks(2);
+  session.refresh();
+  const int held = session.snapshot()->status.held_vertex;
+  EXPECT_EQ(session.object_of_vertex(held), 1) << "the lower sheet, chosen with Tab";
+  tool.release(in, session);
+  session.loop()->run_ticks(1);
+  session.refresh();
+  EXPECT_EQ(session.snapshot()->status.held_vertex, -1);
+
+  // P pins the vertex under the cursor; again unpins it.
+  tool.hover(in, session);
+  tool.key(ToolKey::kPin, in, session);
+  session.loop()->run_ticks(1);
+  session.refresh();
+  EXPECT_EQ(session.snapshot()->status.pinned, 1);
+  tool.key(ToolKey::kPin, in, session);
+  session.loop()->run_ticks(1);
+  session.refresh();
+  EXPECT_EQ(session.snapshot()->status.pinned, 0);
+
+  // Away from the surfaces a press is no grab: the view turns instead.
+  in.view.eye = Vec3(4, 4, 5);
+  EXPECT_FALSE(tool.press(in, session));
+}
+
+// A knot's strands are picked on the screen: within a few pixels of the cursor, one hit a strand,
+// the nearer first where two cross; the press holds the strand's point (a chain in World<3>).
+TEST(GrabTool, AKnotsStrandIsTakenUnderTheCursorTheNearerFirst) {
+  Document d;
+  SceneObject o;
+  o.name = "trefoil";
+  o.shape = generate("torus-knot", {{"n", 120}});
+  d.scene.objects.push_back(o);
+  SessionOptions opt;
+  opt.threaded = false;
+  opt.async_physics = false;
+  Session session;
+  session.open(std::move(d), opt);
+  ASSERT_TRUE(session.simulating()) << session.physics_error();
+  session.loop()->run_ticks(1);
+  session.refresh();
+
+  ToolInput in;
+  in.view.camera.distance = 10;
+  in.view.camera.aspect = 1;
+  in.view.window = Vec2(400, 400);
+  in.view.eye = in.view.camera.eye();
+  const auto& pts = std::get<Curve<3>>(session.scene().objects[0].shape).components[0].points;
+  auto pixel = [&](const Vec3& p) {
+    const Vec2 n = in.view.camera.ndc(p);
+    return Vec2((n.x() + 1) / 2 * 400, (1 - n.y()) / 2 * 400);
+  };
+  // Point 7, between crossings: one strand under the cursor.
+  in.view.cursor = pixel(pts[7]) + Vec2(3, 0);
+  in.view.ray = (in.view.camera.eye() - pts[7]).normalized() * -1;
+  GrabTool tool;
+  tool.hover(in, session);
+  ASSERT_EQ(tool.hits().size(), 1u);
+  EXPECT_NEAR(tool.hits()[0].vertex, 7, 1);
+  EXPECT_TRUE(pick_strands(session.scene(), in.view.camera, pixel(Vec3::Zero()), in.view.window, 10).empty())
+      << "nothing in the hole of the knot";
+  // A crossing of the view: both strands, the nearer the eye first.
+  const ScreenCrossings crossings = screen_crossings(session.scene(), in.view.camera);
+  ASSERT_EQ(crossings.crossings.size(), 3u);
+  in.view.cursor = pixel(crossings.crossings[0].over);
+  tool.hover(in, session);
+  ASSERT_EQ(tool.hits().size(), 2u);
+  EXPECT_LT(tool.hits()[0].distance, tool.hits()[1].distance);
+  ASSERT_TRUE(tool.press(in, session));
+  session.loop()->run_ticks(2);
+  session.refresh();
+  const int held = session.snapshot()->status.held_vertex;
+  EXPECT_EQ(held, tool.hits()[0].vertex) << "the nearer strand's point";
+  EXPECT_GT(pts[static_cast<std::size_t>(held)].z(), pts[static_cast<std::size_t>(tool.hits()[1].vertex)].z());
+  tool.release(in, session);
+}
+
+TEST(Session, AScenePhysicsCannotRunStaysViewable) {
+  Document d;
+  d.scene = two_sheets();
+  std::get<Surface<4>>(d.scene.objects[1].shape).vertices = std::get<Surface<4>>(d.scene.objects[0].shape).vertices;
+  SessionOptions o;
+  o.threaded = false;
+  Session session;
+  session.open(std::move(d), o);
+  EXPECT_FALSE(session.simulating());
+  EXPECT_NE(session.physics_error().find("intersects itself"), std::string::npos) << session.physics_error();
+  EXPECT_EQ(session.scene().objects.size(), 2u) << "the document is kept";
+  session.refresh();  // harmless without a simulation
+  EXPECT_EQ(session.snapshot(), nullptr);
+}
+
+TEST(Session, ADeviceThatCannotOpenFallsBackToTheMouse) {
+  Document d;
+  d.scene = two_sheets();
+  SessionOptions o;
+  o.threaded = false;
+  o.device = "replay:/nonexistent/trajectory.txt";
+  Session session;
+  session.open(std::move(d), o);
+  EXPECT_TRUE(session.simulating());
+  EXPECT_NE(session.device_error().find("using the mouse"), std::string::npos) << session.device_error();
+  EXPECT_EQ(session.device_spec(), "mouse");
+}
+
+}  // namespace
+}  // namespace s4d
