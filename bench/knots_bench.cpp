@@ -82,7 +82,7 @@ void BM_KnotInfoLive500(benchmark::State& state) {
   const Case& c = table_cases()[state.range(0)];
   KnotIndex::shipped();
   KnotInfoOptions o;
-  o.refine = false;  // the live path; the further invariants follow on the worker
+  o.fast = true;  // the live path; the further invariants follow on the worker
   KnotInfo k;
   for (auto _ : state) {
     k = knot_info(c.curve, std::nullopt, o);
@@ -112,7 +112,7 @@ void BM_LinkInfoLive500(benchmark::State& state) {
   KnotIndex::shipped();
   LinkTable::shipped();
   KnotInfoOptions o;
-  o.refine = false;
+  o.fast = true;
   KnotInfo k = knot_info(c.curve, std::nullopt, o);  // the split/composite pieces are made once
   for (auto _ : state) {
     k = knot_info(c.curve, std::nullopt, o);

@@ -33,18 +33,18 @@ void relax_knot(const RelaxArgs& a) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const Curve<3> out = relax_curve(m, d);
   write_shape_file(out, a.out);
-  const auto before = identify_knot(c), after = identify_knot(out);
+  const KnotNaming before = name_knot(c), after = name_knot(out);
   if (a.curve.json_out) {
     std::cout << json{{"iterations", a.iterations}, {"seconds", s}, {"limited_steps", d.limited_steps},
-                      {"before", before.name}, {"after", after.name},
-                      {"crossings_before", before.invariants.diagram_crossings},
-                      {"crossings_after", after.invariants.diagram_crossings}}
+                      {"before", before.name()}, {"after", after.name()},
+                      {"crossings_before", before.identification.invariants.diagram_crossings},
+                      {"crossings_after", after.identification.invariants.diagram_crossings}}
                      .dump(2)
               << "\n";
   } else {
     std::cout << "relaxed " << a.iterations << " steps in " << s << " s (" << a.iterations / s << " it/s); knot "
-              << before.name << " -> " << after.name << "; fewest crossings " << before.invariants.diagram_crossings
-              << " -> " << after.invariants.diagram_crossings << "\nwrote " << a.out << "\n";
+              << before.name() << " -> " << after.name() << "; fewest crossings " << before.identification.invariants.diagram_crossings
+              << " -> " << after.identification.invariants.diagram_crossings << "\nwrote " << a.out << "\n";
   }
 }
 
@@ -75,16 +75,16 @@ void add_knot_flip(CLI::App& knot) {
     const Frame<3> view = parse_view(a->curve.view);
     const Curve<3> changed = flip_crossing(c, view, a->crossing);
     if (!a->out.empty()) write_shape_file(changed, a->out);
-    IdentifyOptions o;
+    NamingOptions o;
     o.frame = view;
-    const auto before = identify_knot(c, o), after = identify_knot(changed, o);
+    const KnotNaming before = name_knot(c, o), after = name_knot(changed, o);
     if (a->curve.json_out) {
-      std::cout << json{{"crossing", a->crossing}, {"before", identification_json(before)},
-                        {"after", identification_json(after)}}
+      std::cout << json{{"crossing", a->crossing}, {"before", naming_json(before)},
+                        {"after", naming_json(after)}}
                        .dump(2)
                 << "\n";
     } else {
-      std::cout << "crossing " << a->crossing << " changed: " << before.name << " -> " << after.name << "\n";
+      std::cout << "crossing " << a->crossing << " changed: " << before.name() << " -> " << after.name() << "\n";
       if (!a->out.empty()) std::cout << "wrote " << a->out << "\n";
     }
   });
@@ -135,14 +135,14 @@ void add_knot_smooth_depth(CLI::App& knot) {
     const Frame<3> view = parse_view(a->curve.view);
     const Curve<3> out = smooth_depth(c, view, a->smoothing);
     write_shape_file(out, a->out);
-    IdentifyOptions o;
+    NamingOptions o;
     o.frame = view;
-    const auto before = identify_knot(c, o), after = identify_knot(out, o);
+    const KnotNaming before = name_knot(c, o), after = name_knot(out, o);
     if (a->curve.json_out)
-      std::cout << json{{"before", identification_json(before)}, {"after", identification_json(after)}}.dump(2)
+      std::cout << json{{"before", naming_json(before)}, {"after", naming_json(after)}}.dump(2)
                 << "\n";
     else
-      std::cout << "depth smoothed: " << before.name << " -> " << after.name << "; wrote " << a->out << "\n";
+      std::cout << "depth smoothed: " << before.name() << " -> " << after.name() << "; wrote " << a->out << "\n";
   });
 }
 

@@ -32,13 +32,13 @@ void make_knot(const MakeArgs& a) {
   const Curve<3> c = make_table_knot(a.name, a.embed);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   write_shape_file(c, a.out);
-  const KnotIdentification id = identify_knot(c);
+  const KnotNaming id = name_knot(c);
   if (a.json_out)
     std::cout << json{{"name", table_knot(a.name).name},
                       {"points", c.point_count()},
                       {"milliseconds", ms},
-                      {"identified", id.name},
-                      {"proven", id.proven}}
+                      {"identified", id.name()},
+                      {"proven", id.proven()}}
                      .dump(2)
               << "\n";
   else
