@@ -6,6 +6,7 @@
 
 #include "knot_commands.hpp"
 #include "knot_input.hpp"
+#include "knots/diagram_codes.hpp"
 #include "knots/knot_invariants.hpp"
 
 namespace s4d::cli {
@@ -40,14 +41,25 @@ void add_knot_identify(CLI::App& knot) {
 }
 
 void add_knot_code(CLI::App& knot) {
-  auto a = std::make_shared<KnotCurveArgs>();
+  struct Args {
+    KnotCurveArgs curve;
+    bool pd = false, dt = false;
+  };
+  auto a = std::make_shared<Args>();
   auto* code = knot.add_subcommand("code", "Gauss, PD and DT codes of a curve's diagram in a view");
-  add_curve_args(code, *a);
+  add_curve_args(code, a->curve);
+  code->add_flag("--pd", a->pd, "only the PD code, as `knot make --pd` reads it: [[1,5,2,4],...]");
+  code->add_flag("--dt", a->dt, "only the DT code (knots), as `knot make --dt` reads it: 4 6 2");
   code->callback([a] {
     Frame<3> used;
-    const KnotDiagram d = diagram_from_curve(load_knot_curve(a->file), parse_view(a->view), {}, &used);
+    const KnotDiagram d = diagram_from_curve(load_knot_curve(a->curve.file), parse_view(a->curve.view), {}, &used);
+    if (a->pd || a->dt) {
+      if (a->pd) std::cout << pd_list(d) << "\n";
+      if (a->dt) std::cout << dt_code(d) << "\n";
+      return;
+    }
     const json j = codes_json(d);
-    if (a->json_out) {
+    if (a->curve.json_out) {
       std::cout << j.dump(2) << "\n";
       return;
     }

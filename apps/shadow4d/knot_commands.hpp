@@ -46,6 +46,9 @@ void add_knot_relax(CLI::App& knot);
 void add_knot_flip(CLI::App& knot);
 void add_knot_resample(CLI::App& knot);
 void add_knot_smooth_depth(CLI::App& knot);
+void add_knot_mirror(CLI::App& knot);
+void add_knot_reverse(CLI::App& knot);
+void add_knot_delete_component(CLI::App& knot);
 // cmd_knot_sketch.cpp
 void add_knot_sketch(CLI::App& knot);
 
