@@ -74,6 +74,19 @@ TEST(DiagramCodes, APdCodeCarriesItsChiralityIntoTheCurve) {
   EXPECT_EQ(borromean.name, "L6a4 (Borromean rings)");
 }
 
+// The census diagrams of 7_7 and 9_40, drawn with their largest face outside, lost a crossing; the
+// drawing then takes the next face. (A scratch run drew all 801 knots to 11 crossings.)
+TEST(DiagramCodes, CodesWhoseFirstDrawingLosesACrossingAreDrawnWithAnotherFaceOutside) {
+  DiagramEmbedding raw;
+  raw.relax_iterations = 0;
+  for (const char* name : {"7_7", "9_40"}) {
+    const KnotDiagram d = diagram_from_pd(pd_list(table_knot(name).diagram));
+    const auto id = identify_knot(curve_from_diagram(d, raw));
+    EXPECT_EQ(id.name.rfind(name, 0), 0u) << id.name;
+    EXPECT_EQ(identify_knot(curve_from_diagram(d.mirrored(), raw)).invariants.homfly, id.invariants.homfly.mirror_alpha());
+  }
+}
+
 TEST(DiagramCodes, WhatIsNoCodeIsRefusedWithAReason) {
   for (const char* bad : {"", "hello", "[[1,2,3]]", "[[1,5,2,4],[3,1,4,6]]"}) EXPECT_THROW(diagram_from_pd(bad), Error) << bad;
   for (const char* bad : {"", "4 6", "3 5 7", "[]"}) EXPECT_THROW(diagram_from_dt(bad), Error) << bad;
