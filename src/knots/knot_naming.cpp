@@ -55,7 +55,9 @@ std::string link_chirality_sentence(const LinkCandidate& l) {
 }
 
 // What the identification by the polynomials rests on.
-std::vector<std::string> grounds(const KnotIdentification& id, const KnotIndex& index, const LinkTable& links) {
+const LinkTable& links_of(const NamingOptions& o) { return o.links ? *o.links : LinkTable::shipped(); }
+
+std::vector<std::string> grounds(const KnotIdentification& id, const KnotIndex& index, const NamingOptions& o) {
   const KnotInvariants& v = id.invariants;
   if (id.kind == KnotKind::kUnknot && id.proven && v.simplified_crossings == 0)
     return {"Reidemeister simplification to a diagram without crossings (Regina)"};
@@ -71,7 +73,7 @@ std::vector<std::string> grounds(const KnotIdentification& id, const KnotIndex& 
   } else if (id.kind == KnotKind::kLink && !id.link_candidates.empty()) {
     out.push_back(
         "the HOMFLY-PT polynomial in every orientation, the components' knot types and linking numbers, matched "
-        "against Thistlethwaite's link table to " + std::to_string(links.max_crossings()) + " crossings");
+        "against Thistlethwaite's link table to " + std::to_string(links_of(o).max_crossings()) + " crossings");
     if (id.proven)
       out.push_back("a connected simplified diagram of " + std::to_string(v.simplified_crossings) +
                     " crossings, and no split or composite link with the same HOMFLY-PT, so the table holds every "
@@ -85,7 +87,6 @@ std::vector<std::string> grounds(const KnotIdentification& id, const KnotIndex& 
 struct Context {
   const NamingOptions& options;
   const KnotIndex& index;
-  const LinkTable& links;
   const KnotRefinements& engine;
   KnotNaming& out;
 };
@@ -130,7 +131,7 @@ void refine_link(Context& c) {
                              " candidate(s)");
   id.link_candidates = std::move(kept);
   const bool was_proven = id.proven;
-  settle_link(id, c.index, c.links);
+  settle_link(id, c.index, links_of(c.options));
   if (id.proven && !was_proven)
     c.out.decided_by.push_back("then one table link left, a connected simplified diagram of " +
                                std::to_string(id.invariants.simplified_crossings) +
@@ -262,28 +263,28 @@ std::string KnotNaming::headline() const {
 
 namespace {
 
-KnotNaming decide(KnotIdentification id, const NamingOptions& options, const KnotIndex& index,
-                  const LinkTable& links) {
+KnotNaming decide(KnotIdentification id, const NamingOptions& options, const KnotIndex& index) {
   KnotNaming out;
   out.identification = std::move(id);
-  out.decided_by = grounds(out.identification, index, links);
+  out.decided_by = grounds(out.identification, index, options);
   const std::vector<std::string> due = refinements_due(out.identification, options);
   if (due.empty()) return out;
   if (options.fast) {
     out.skipped = due;
     return out;
   }
-  Context c{options, index, links, options.refinements ? *options.refinements : regina_refinements(), out};
+  Context c{options, index, options.refinements ? *options.refinements : regina_refinements(), out};
   if (out.identification.kind == KnotKind::kLink) refine_link(c);
   else refine_knot(c);
   return out;
 }
 
-IdentifyOptions identify_options(const NamingOptions& options, const KnotIndex& index, const LinkTable& links) {
+// The link table is left to identify_diagram to load, and only for links.
+IdentifyOptions identify_options(const NamingOptions& options, const KnotIndex& index) {
   IdentifyOptions o;
   o.frame = options.frame;
   o.index = &index;
-  o.links = &links;
+  o.links = options.links;
   return o;
 }
 
@@ -291,15 +292,13 @@ IdentifyOptions identify_options(const NamingOptions& options, const KnotIndex& 
 
 KnotNaming name_diagram(const KnotDiagram& diagram, const NamingOptions& options) {
   const KnotIndex& index = options.index ? *options.index : KnotIndex::shipped();
-  const LinkTable& links = options.links ? *options.links : LinkTable::shipped();
-  return decide(identify_diagram(diagram, identify_options(options, index, links)), options, index, links);
+  return decide(identify_diagram(diagram, identify_options(options, index)), options, index);
 }
 
 KnotNaming name_knot(const Curve<3>& curve, const NamingOptions& options) {
   const KnotIndex& index = options.index ? *options.index : KnotIndex::shipped();
-  const LinkTable& links = options.links ? *options.links : LinkTable::shipped();
   // In the view with fewest crossings among the given one and the principal axes (identify_knot).
-  return decide(identify_knot(curve, identify_options(options, index, links)), options, index, links);
+  return decide(identify_knot(curve, identify_options(options, index)), options, index);
 }
 
 }  // namespace s4d
