@@ -12,6 +12,7 @@
 #include "knots/braid_closure.hpp"
 #include "knots/knot_identify.hpp"
 #include "knots/knot_info.hpp"
+#include "knots/knot_naming.hpp"
 #include "knots/knot_table.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
@@ -82,7 +83,7 @@ void BM_KnotInfoLive500(benchmark::State& state) {
   const Case& c = table_cases()[state.range(0)];
   KnotIndex::shipped();
   KnotInfoOptions o;
-  o.refine = false;  // the live path; the further invariants follow on the worker
+  o.fast = true;  // the live path; the further invariants follow on the worker
   KnotInfo k;
   for (auto _ : state) {
     k = knot_info(c.curve, std::nullopt, o);
@@ -112,7 +113,7 @@ void BM_LinkInfoLive500(benchmark::State& state) {
   KnotIndex::shipped();
   LinkTable::shipped();
   KnotInfoOptions o;
-  o.refine = false;
+  o.fast = true;
   KnotInfo k = knot_info(c.curve, std::nullopt, o);  // the split/composite pieces are made once
   for (auto _ : state) {
     k = knot_info(c.curve, std::nullopt, o);
@@ -137,6 +138,37 @@ void BM_KnotInfoRefineConway(benchmark::State& state) {
   state.SetLabel(std::string(c.name) + " -> " + k.name + (k.proven ? " (proven)" : ""));
 }
 BENCHMARK(BM_KnotInfoRefineConway)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Issue 37, point 4: what tells mutants apart and what it costs. Covers of index 2 to 6 of the
+// group of a table diagram (uncached: the naming computes the curve's own once per request).
+void BM_CoverSignatureIndex6(benchmark::State& state) {
+  const char* names[] = {"11n_34", "11n_42", "10_132", "L11n432", "L11n437"};
+  const char* name = names[state.range(0)];
+  const KnotDiagram d = table_knot(name).diagram;
+  std::string sig;
+  for (auto _ : state) sig = cover_signature(d, 6);
+  state.SetLabel(std::string(name) + ", signature hash " + std::to_string(std::hash<std::string>{}(sig) % 100000));
+}
+BENCHMARK(BM_CoverSignatureIndex6)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The one naming in full (name_knot, the default of `knot identify`, `knot info` and the panel) on
+// 500-point curves turned away from the table's view; the candidates' signatures cached (as after
+// the first request of a session).
+void BM_NameKnotFull(benchmark::State& state) {
+  const char* names[] = {"10_132 mirror", "11n_34", "11n_42 mirror"};
+  const char* name = names[state.range(0)];
+  Curve<3> c = resample_curve_to_count(make_table_knot(name), 500);
+  const Mat<3> turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  for (auto& p : c.components)
+    for (Vec3& q : p.points) q = turn * q;
+  KnotNaming n = name_knot(c);
+  for (auto _ : state) {
+    n = name_knot(c);
+    benchmark::DoNotOptimize(n.identification.name);
+  }
+  state.SetLabel(std::string(name) + " -> " + n.headline());
+}
+BENCHMARK(BM_NameKnotFull)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_MakeTableKnot(benchmark::State& state) {
   const char* names[] = {"3_1", "10_165", "12a_1", "14nh_7499"};

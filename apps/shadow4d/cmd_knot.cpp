@@ -1,5 +1,5 @@
 // `shadow4d knot identify|info|code|compare|unknotting|exercise|make|relax|flip|resample|sketch|
-// smooth-depth`: the knot engine from the command line, with --json for scripts. Curves come from
+// smooth-depth|mirror|reverse|delete-component`: the knot engine from the command line, with --json for scripts. Curves come from
 // any curve file, generator call or scene. Each sub-command lives in a cmd_knot_*.cpp by what it
 // does (knot_commands.hpp).
 #include "command.hpp"
@@ -22,12 +22,15 @@ void setup(CLI::App& knot) {
   add_knot_resample(knot);
   add_knot_sketch(knot);
   add_knot_smooth_depth(knot);
+  add_knot_mirror(knot);
+  add_knot_reverse(knot);
+  add_knot_delete_component(knot);
 }
 
 const CommandRegistrar kKnot(
     "knot",
     "knot engine: identify, info, code, compare, unknotting, exercise, make, relax, flip, resample, sketch, "
-    "smooth-depth",
+    "smooth-depth, mirror, reverse, delete-component",
     setup);
 
 }  // namespace

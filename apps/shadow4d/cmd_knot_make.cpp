@@ -1,4 +1,5 @@
-// `knot make`: a relaxed 3D curve of a knot or link of the table, named back; `--list` the names.
+// `knot make`: a relaxed 3D curve of a knot or link of the table, or of a PD or DT code, named back;
+// `--list` the names.
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -6,6 +7,7 @@
 #include "core/error.hpp"
 #include "io/object_file.hpp"
 #include "knot_commands.hpp"
+#include "knots/diagram_codes.hpp"
 #include "knots/knot_table.hpp"
 
 namespace s4d::cli {
@@ -15,7 +17,7 @@ using nlohmann::json;
 namespace {
 
 struct MakeArgs {
-  std::string name, out;
+  std::string name, out, pd, dt;
   bool list = false, json_out = false;
   DiagramEmbedding embed;
 };
@@ -27,23 +29,31 @@ void make_knot(const MakeArgs& a) {
                 << "\n";
     return;
   }
-  if (a.name.empty() || a.out.empty()) throw Error("knot make needs a NAME and --out FILE (or --list)");
+  const int given = !a.name.empty() + !a.pd.empty() + !a.dt.empty();
+  if (given != 1 || a.out.empty())
+    throw Error("knot make needs one of a NAME, --pd CODE or --dt CODE, and --out FILE (or --list)");
   const auto t0 = std::chrono::steady_clock::now();
-  const Curve<3> c = make_table_knot(a.name, a.embed);
+  // A code is drawn as the table draws its diagrams (table_knot's for a name).
+  std::string what;
+  Curve<3> c;
+  if (!a.name.empty()) {
+    what = table_knot(a.name).name;
+    c = make_table_knot(a.name, a.embed);
+  } else {
+    what = a.pd.empty() ? "the DT code" : "the PD code";
+    c = curve_from_diagram(a.pd.empty() ? diagram_from_dt(a.dt) : diagram_from_pd(a.pd), a.embed);
+  }
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   write_shape_file(c, a.out);
-  const KnotIdentification id = identify_knot(c);
+  const KnotNaming id = name_knot(c);
   if (a.json_out)
-    std::cout << json{{"name", table_knot(a.name).name},
-                      {"points", c.point_count()},
-                      {"milliseconds", ms},
-                      {"identified", id.name},
-                      {"proven", id.proven}}
+    std::cout << json{{"name", what}, {"points", c.point_count()}, {"milliseconds", ms},
+                      {"identified", id.name()}, {"proven", id.proven()}}
                      .dump(2)
               << "\n";
   else
-    std::cout << "made " << table_knot(a.name).name << ": " << c.point_count() << " points in " << ms
-              << " ms, identified as " << id.headline() << "; wrote " << a.out << "\n";
+    std::cout << "made " << what << ": " << c.point_count() << " points in " << ms << " ms, identified as "
+              << id.headline() << "; wrote " << a.out << "\n";
 }
 
 }  // namespace
@@ -51,8 +61,15 @@ void make_knot(const MakeArgs& a) {
 void add_knot_make(CLI::App& knot) {
   auto a = std::make_shared<MakeArgs>();
   auto* make = knot.add_subcommand(
-      "make", "a 3D curve of a knot or link from the table (3_1, 11n_34, T(2,5), L6a4, Hopf link, m3_1, ...)");
+      "make", "a 3D curve of a knot or link from the table (3_1, 11n_34, T(2,5), L6a4, Hopf link, m3_1, ...) or of a "
+      "PD or DT code");
   make->add_option("name", a->name, "knot name; 'NAME mirror', 'mNAME' or 'NAME*' for the mirror image");
+  make->add_option("--pd", a->pd,
+                   "instead of a name, a PD code as KnotInfo, KnotTheory or SnapPy write it: "
+                   "\"[[1,5,2,4],[3,1,4,6],[5,3,6,2]]\", \"PD[X[1,5,2,4],...]\"");
+  make->add_option("--dt", a->dt,
+                   "instead of a name, a DT code of a knot: \"4 6 2\" or \"bca\" (a DT code does not say which "
+                   "of a knot and its mirror image)");
   make->add_option("--out", a->out, "where to write the curve");
   make->add_option("--relax", a->embed.relax_iterations, "relaxation steps")
       ->capture_default_str()

@@ -6,6 +6,7 @@
 
 #include "knot_commands.hpp"
 #include "knot_input.hpp"
+#include "knots/diagram_codes.hpp"
 #include "knots/knot_invariants.hpp"
 
 namespace s4d::cli {
@@ -15,39 +16,50 @@ using nlohmann::json;
 void add_knot_identify(CLI::App& knot) {
   struct Args {
     KnotCurveArgs curve;
-    bool prove = false;
+    bool fast = false;
   };
   auto a = std::make_shared<Args>();
-  auto* identify = knot.add_subcommand("identify", "name the knot or link of a curve");
+  auto* identify = knot.add_subcommand("identify", "name the knot or link of a curve, and say what decided it");
   add_curve_args(identify, a->curve);
-  identify->add_flag("--prove-unknot", a->prove, "when only invariants say unknot, prove it (slow)");
+  add_fast_flag(identify, a->fast);
   identify->callback([a] {
-    IdentifyOptions o;
+    NamingOptions o;
     o.frame = parse_view(a->curve.view);
-    o.prove_unknot = a->prove;
+    o.fast = a->fast;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto id = identify_knot(load_knot_curve(a->curve.file), o);
+    const KnotNaming n = name_knot(load_knot_curve(a->curve.file), o);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (a->curve.json_out) {
-      json j = identification_json(id);
+      json j = naming_json(n);
       j["milliseconds"] = ms;
       std::cout << j.dump(2) << "\n";
     } else {
-      print_identification(id);
+      print_naming(n);
     }
   });
 }
 
 void add_knot_code(CLI::App& knot) {
-  auto a = std::make_shared<KnotCurveArgs>();
+  struct Args {
+    KnotCurveArgs curve;
+    bool pd = false, dt = false;
+  };
+  auto a = std::make_shared<Args>();
   auto* code = knot.add_subcommand("code", "Gauss, PD and DT codes of a curve's diagram in a view");
-  add_curve_args(code, *a);
+  add_curve_args(code, a->curve);
+  code->add_flag("--pd", a->pd, "only the PD code, as `knot make --pd` reads it: [[1,5,2,4],...]");
+  code->add_flag("--dt", a->dt, "only the DT code (knots), as `knot make --dt` reads it: 4 6 2");
   code->callback([a] {
     Frame<3> used;
-    const KnotDiagram d = diagram_from_curve(load_knot_curve(a->file), parse_view(a->view), {}, &used);
+    const KnotDiagram d = diagram_from_curve(load_knot_curve(a->curve.file), parse_view(a->curve.view), {}, &used);
+    if (a->pd || a->dt) {
+      if (a->pd) std::cout << pd_list(d) << "\n";
+      if (a->dt) std::cout << dt_code(d) << "\n";
+      return;
+    }
     const json j = codes_json(d);
-    if (a->json_out) {
+    if (a->curve.json_out) {
       std::cout << j.dump(2) << "\n";
       return;
     }
@@ -59,7 +71,7 @@ void add_knot_code(CLI::App& knot) {
 namespace {
 
 void print_info(const KnotInfo& k) {
-  std::cout << "name: " << k.name << (k.proven ? "" : "  [not proven]") << "\n";
+  std::cout << "name: " << k.headline << "\n";
   if (!k.chirality.empty()) std::cout << "chirality: " << k.chirality << "\n";
   if (k.candidates.size() > 1) {
     std::cout << "candidates:";
@@ -68,6 +80,7 @@ void print_info(const KnotInfo& k) {
   }
   for (const auto& x : k.decided_by) std::cout << "decided by: " << x << "\n";
   for (const auto& x : k.further_used) std::cout << "further invariant tried: " << x << "\n";
+  for (const auto& x : k.skipped) std::cout << "skipped (--fast): " << x << "\n";
   std::cout << "crossings: " << k.view_crossings << " in this view, " << k.simplified_crossings
             << " after simplification\n"
             << "Gauss code: " << k.gauss_code << "\n"
@@ -82,15 +95,15 @@ void print_info(const KnotInfo& k) {
 void add_knot_info(CLI::App& knot) {
   struct Args {
     KnotCurveArgs curve;
-    bool no_refine = false;
+    bool fast = false;
   };
   auto a = std::make_shared<Args>();
   auto* info = knot.add_subcommand("info", "the live information panel of a curve in a view");
   add_curve_args(info, a->curve);
-  info->add_flag("--no-refine", a->no_refine, "skip the further invariants (covers, Reidemeister search)");
+  add_fast_flag(info, a->fast);
   info->callback([a] {
     KnotInfoOptions o;
-    o.refine = !a->no_refine;
+    o.fast = a->fast;
     const Curve<3> c = load_knot_curve(a->curve.file);
     const KnotInfo k =
         knot_info(c, a->curve.view.empty() ? std::nullopt : std::optional(parse_view(a->curve.view)), o);

@@ -53,11 +53,11 @@ void sketch_by_touch(const std::string& device_spec, const std::string& stroke, 
   for (Polyline<3>& p : curve.components)
     for (Vec3& q : p.points) q /= kUnit;
   if (!out.empty()) write_shape_file(curve, out);
-  const KnotIdentification id = identify_knot(curve);
+  const KnotNaming id = name_knot(curve);
   if (as_json) {
     std::cout << json{{"components", curve.components.size()}, {"points", curve.point_count()},
-                      {"crossings", r.link.crossings}, {"gauss", r.gauss}, {"name", id.name},
-                      {"proven", id.proven}, {"ticks", r.ticks},
+                      {"crossings", r.link.crossings}, {"gauss", r.gauss}, {"name", id.name()},
+                      {"proven", id.proven()}, {"ticks", r.ticks},
                       {"crossings_refused", r.strokes.status.crossings_refused},
                       {"blocked_ticks", r.strokes.status.blocked_ticks},
                       {"max_repulsion", r.strokes.status.max_repulsion}, {"max_force", r.max_force},
@@ -93,11 +93,11 @@ void sketch_knot(const SketchArgs& a, const Curve<3>& raw) {
   o.pen = a.pen;
   const SketchedKnot k = knot_from_sketch(stroke_from_curve(raw, a.dt), o);
   write_shape_file(k.curve, a.out);
-  const KnotIdentification id = identify_knot(k.curve);
+  const KnotNaming id = name_knot(k.curve);
   if (a.json_out)
     std::cout << json{{"points", k.curve.point_count()}, {"crossings", k.crossings},
                       {"gauss", diagram_from_curve(k.curve, Frame<3>()).gauss_code()},
-                      {"name", id.name}, {"proven", id.proven}}.dump(2) << "\n";
+                      {"name", id.name()}, {"proven", id.proven()}}.dump(2) << "\n";
   else
     std::cout << "sketched a knot of " << k.curve.point_count() << " points, " << k.crossings
               << " crossing(s): " << id.headline() << "; wrote " << a.out << "\n";

@@ -43,7 +43,11 @@ const std::map<std::string, std::string>& examples() {
       {"knot compare", "shadow4d knot compare torus-knot:p=2,q=3 \"torus-knot:p=2,q=3,mirror=1\""},
       {"knot info", "shadow4d knot info scenes/trefoil-knot.json"},
       {"knot unknotting", "shadow4d knot unknotting scenes/trefoil-knot.json"},
-      {"knot make", "shadow4d knot make 7_4 --out k.curve   (knot make --list: the names)"},
+      {"knot make", "shadow4d knot make 7_4 --out k.curve   (knot make --list: the names; knot make --pd "
+                    "\"[[1,5,2,4],[3,1,4,6],[5,3,6,2]]\" --out k.curve)"},
+      {"knot mirror", "shadow4d knot mirror k.curve --out mirror.curve"},
+      {"knot reverse", "shadow4d knot reverse link.curve --component 2 --out reversed.curve"},
+      {"knot delete-component", "shadow4d knot delete-component link.curve --component 2 --out rest.curve"},
       {"knot relax", "shadow4d knot relax k.curve --out relaxed.curve"},
       {"knot flip", "shadow4d knot flip scenes/trefoil-knot.json --crossing 1 --out unknot.curve"},
       {"knot resample", "shadow4d knot resample k.curve --points 200 --out k200.curve"},

@@ -18,6 +18,12 @@ void add_curve_args(CLI::App* s, KnotCurveArgs& c, bool with_view) {
   s->add_flag("--json", c.json_out, "machine-readable output");
 }
 
+void add_fast_flag(CLI::App* s, bool& fast) {
+  s->add_flag("--fast", fast,
+              "skip the slow refinements (covers of the group, Reidemeister search, unknot recognition) for "
+              "batch use; the name then says what was skipped");
+}
+
 namespace {
 
 json factor_json(const KnotFactor& f) {
@@ -70,8 +76,9 @@ json identification_json(const KnotIdentification& id) {
   return j;
 }
 
-void print_identification(const KnotIdentification& id, const std::string& indent) {
-  std::cout << indent << (id.kind == KnotKind::kLink ? "link: " : "knot: ") << id.headline() << "\n";
+void print_identification(const KnotIdentification& id, const std::string& indent, const std::string& headline) {
+  std::cout << indent << (id.kind == KnotKind::kLink ? "link: " : "knot: ")
+            << (headline.empty() ? id.headline() : headline) << "\n";
   const auto& v = id.invariants;
   if (id.link_candidates.size() > 1) {
     std::cout << indent << "candidates (the invariants cannot decide):\n";
@@ -99,6 +106,22 @@ void print_identification(const KnotIdentification& id, const std::string& inden
       std::cout << indent << "component " << i << ": " << id.components[i].name << "\n";
 }
 
+json naming_json(const KnotNaming& n) {
+  json j = identification_json(n.identification);
+  j["decided_by"] = n.decided_by;
+  j["further_used"] = n.further_used;
+  j["skipped"] = n.skipped;
+  j["chirality"] = n.chirality();
+  return j;
+}
+
+void print_naming(const KnotNaming& n) {
+  print_identification(n.identification, "", n.headline());
+  for (const auto& x : n.decided_by) std::cout << "decided by: " << x << "\n";
+  for (const auto& x : n.further_used) std::cout << "further invariant tried: " << x << "\n";
+  for (const auto& x : n.skipped) std::cout << "skipped (--fast): " << x << "\n";
+}
+
 json info_json(const KnotInfo& k) {
   return {{"name", k.name},
           {"proven", k.proven},
@@ -106,6 +129,7 @@ json info_json(const KnotInfo& k) {
           {"candidates", k.candidates},
           {"decided_by", k.decided_by},
           {"further_used", k.further_used},
+          {"skipped", k.skipped},
           {"view_crossings", k.view_crossings},
           {"simplified_crossings", k.simplified_crossings},
           {"gauss", k.gauss_code},

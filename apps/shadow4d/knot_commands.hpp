@@ -8,6 +8,7 @@
 #include "knots/knot_diagram.hpp"
 #include "knots/knot_identify.hpp"
 #include "knots/knot_info.hpp"
+#include "knots/knot_naming.hpp"
 
 namespace s4d::cli {
 
@@ -17,9 +18,16 @@ struct KnotCurveArgs {
   bool json_out = false;
 };
 void add_curve_args(CLI::App* sub, KnotCurveArgs& args, bool with_view = true);
+// --fast: the naming skips its slow refinements (and says so).
+void add_fast_flag(CLI::App* sub, bool& fast);
 
 nlohmann::json identification_json(const KnotIdentification& id);
-void print_identification(const KnotIdentification& id, const std::string& indent = "");
+// `headline`: the name line ("" for id.headline()).
+void print_identification(const KnotIdentification& id, const std::string& indent = "",
+                          const std::string& headline = "");
+// The one naming (knot_naming.hpp): the identification, what decided it, what was tried or skipped.
+nlohmann::json naming_json(const KnotNaming& n);
+void print_naming(const KnotNaming& n);
 nlohmann::json info_json(const KnotInfo& k);
 nlohmann::json codes_json(const KnotDiagram& d);
 
@@ -38,6 +46,9 @@ void add_knot_relax(CLI::App& knot);
 void add_knot_flip(CLI::App& knot);
 void add_knot_resample(CLI::App& knot);
 void add_knot_smooth_depth(CLI::App& knot);
+void add_knot_mirror(CLI::App& knot);
+void add_knot_reverse(CLI::App& knot);
+void add_knot_delete_component(CLI::App& knot);
 // cmd_knot_sketch.cpp
 void add_knot_sketch(CLI::App& knot);
 

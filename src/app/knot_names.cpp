@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 #include "knots/knot_curve.hpp"
-#include "knots/knot_identify.hpp"
+#include "knots/knot_naming.hpp"
 
 namespace s4d {
 
@@ -30,7 +30,10 @@ std::size_t points_hash(const Shape& shape) {
 
 std::string identification_line(const SceneObject& obj) {
   try {
-    return "knot: " + identify_knot(knot_curve_of(obj.shape, "'" + obj.name + "'")).headline();
+    // Live on the UI thread: the fast naming, which says what it skipped (the Knot panel goes on).
+    NamingOptions fast;
+    fast.fast = true;
+    return "knot: " + name_knot(knot_curve_of(obj.shape, "'" + obj.name + "'"), fast).headline();
   } catch (const Error& e) {
     return e.what();
   }

@@ -11,7 +11,9 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "app/knot_edit_step.hpp"
 #include "app/panels.hpp"
+#include "knots/curve_edits.hpp"
 #include "knots/knot_diagram.hpp"
 #include "view/view_crossings.hpp"
 
@@ -169,6 +171,7 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
       if (ImGui::Selectable(scene.objects[static_cast<std::size_t>(o)].name.c_str(), o == selected_)) selected_ = o;
     ImGui::EndCombo();
   }
+  toolbar(model);
   const Curve<3>& c = *curve_of(scene, selected_);
   const std::size_t h = points_hash(c, view);
   if (h != submitted_hash_) {  // it moved or the view turned: ask again (older requests are dropped)
@@ -227,6 +230,30 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
     ImGui::Text("determinant %lld   (%.1f ms)", static_cast<long long>(k.determinant), k.milliseconds);
   }
   ImGui::End();
+}
+
+// The diagram toolbar (as KnotFolio's): each edit one undoable step (also: shadow4d knot mirror,
+// reverse, delete-component).
+void KnotPanels::toolbar(GuiModel& model) {
+  const Curve<3>& c = *curve_of(model.scene(), selected_);
+  const int n = static_cast<int>(c.components.size());
+  component_ = std::clamp(component_, 1, n);
+  const int o = selected_, k = component_ - 1;
+  if (button("Mirror")) model.status = edit_curve_object(model.session, o, "mirror", mirrored_curve);
+  ImGui::SameLine();
+  if (button("Reverse component"))
+    model.status = edit_curve_object(model.session, o, "reverse component " + std::to_string(component_) + " of",
+                                     [k](const Curve<3>& x) { return with_component_reversed(x, k); });
+  if (n > 1) {
+    ImGui::SameLine();
+    if (button("Delete component"))
+      model.status = edit_curve_object(model.session, o, "delete component " + std::to_string(component_) + " of",
+                                       [k](const Curve<3>& x) { return with_component_deleted(x, k); });
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    ImGui::InputInt("component", &component_);
+    component_ = std::clamp(component_, 1, n);
+  }
 }
 
 // [SECTION] Knot from the table

@@ -3,7 +3,8 @@
 // from the table, and the user study's two exercises — "are these the same knot?" (a pair from the
 // table side by side, the user's answer judged by the invariants) and "unknot it by one crossing
 // change" (a knot of unknotting number one, its crossings numbered in the view, a right click
-// judged). Every slow call runs off the UI thread.
+// judged), and the diagram toolbar (mirror, reverse or delete a component: one undoable step
+// each). Every slow call runs off the UI thread.
 #pragma once
 #include <array>
 #include <future>
@@ -47,6 +48,7 @@ class KnotPanels {
 
  private:
   void info_panel(GuiModel& model, const Frame<3>& view);
+  void toolbar(GuiModel& model);  // mirror, reverse or delete a component of the selected curve
   void table_dialog(GuiModel& model);
   void same_dialog(GuiModel& model);
   void unknot_dialog(GuiModel& model, const Frame<3>& view);
@@ -60,6 +62,7 @@ class KnotPanels {
   bool name_hidden_ = false;  // the Knot panel hides the name (touch and sound only, an exercise)
   KnotInfoWorker worker_;
   int selected_ = -1;              // scene object shown
+  int component_ = 1;              // the toolbar's component (from 1, as the panel counts them)
   std::size_t submitted_hash_ = 0;
   std::uint64_t submitted_ = 0;    // the worker's request for it
   std::shared_ptr<const KnotInfoWorker::Result> shown_;

@@ -1,6 +1,7 @@
 // The drawing: half-edges from the PD code, faces by walking them, the barycentric subdivision
 // (crossings, edge midpoints, face centres), Tutte's embedding with the largest simple face
-// outside, strands along crossing -> edge midpoint -> crossing, depth +-h at each crossing.
+// outside (the next one where that drawing loses a crossing), strands along crossing -> edge
+// midpoint -> crossing, depth +-h at each crossing.
 // Sections: [SECTION] faces, [SECTION] drawing
 #include "knots/diagram_embedding.hpp"
 
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include "core/error.hpp"
@@ -65,7 +67,20 @@ struct Drawing {
   std::vector<Vec2> crossing, edge;  // positions of crossing nodes and edge midpoints
 };
 
-Drawing tutte(const Map& m) {
+// The faces that may go outside, largest first: those whose corners are distinct crossings.
+std::vector<int> outer_faces(const Map& m) {
+  std::vector<int> out;
+  for (int f = 0; f < static_cast<int>(m.faces.size()); ++f) {
+    std::set<int> corners;
+    for (int i : m.faces[f]) corners.insert(i / 4);
+    if (corners.size() == m.faces[f].size()) out.push_back(f);
+  }
+  std::stable_sort(out.begin(), out.end(), [&](int a, int b) { return m.faces[a].size() > m.faces[b].size(); });
+  if (out.empty()) throw Error("the diagram has no face to draw outside (it is not reduced enough to draw)");
+  return out;
+}
+
+Drawing tutte(const Map& m, int outer) {
   const int nc = m.n, ne = 2 * m.n, nf = static_cast<int>(m.faces.size());
   const int nodes = nc + ne + nf;
   std::vector<std::set<int>> adj(nodes);
@@ -80,15 +95,6 @@ Drawing tutte(const Map& m) {
     link(c, f);
     link(e, f);
   }
-  // The outside: the largest face whose corners are distinct crossings.
-  int outer = -1;
-  for (int f = 0; f < nf; ++f) {
-    std::set<int> corners;
-    for (int i : m.faces[f]) corners.insert(i / 4);
-    if (corners.size() != m.faces[f].size()) continue;
-    if (outer < 0 || m.faces[f].size() > m.faces[outer].size()) outer = f;
-  }
-  if (outer < 0) throw Error("the diagram has no face to draw outside (it is not reduced enough to draw)");
   std::vector<int> fixed_at(nodes, -1);
   std::vector<Vec2> pos(nodes, Vec2::Zero());
   std::vector<int> ring;
@@ -129,6 +135,10 @@ Drawing tutte(const Map& m) {
   return dr;
 }
 
+// The curve of the drawing: strands through the nodes, lifted at the crossings, checked against
+// the diagram (throws Error when a crossing was lost or its sign disagrees), resampled, relaxed.
+Curve<3> draw(const KnotDiagram& d, const Map& m, const Drawing& dr, const DiagramEmbedding& options);
+
 }  // namespace
 
 Curve<3> curve_from_diagram(const KnotDiagram& d, const DiagramEmbedding& options) {
@@ -152,7 +162,22 @@ Curve<3> curve_from_diagram(const KnotDiagram& d, const DiagramEmbedding& option
     throw Error("the diagram is not planar or not connected (" + std::to_string(m.faces.size()) +
                 " faces for " + std::to_string(m.n) + " crossings; a connected planar one has " +
                 std::to_string(m.n + 2) + ")");
-  const Drawing dr = tutte(m);
+  // The largest face outside draws best; where its drawing lines strands up so that a crossing is
+  // lost (a few census diagrams, such as 7_7's), the next face is tried.
+  std::optional<Error> first;
+  for (int outer : outer_faces(m)) {
+    try {
+      return draw(d, m, tutte(m, outer), options);
+    } catch (const Error& e) {
+      if (!first) first = e;
+    }
+  }
+  throw *first;
+}
+
+namespace {
+
+Curve<3> draw(const KnotDiagram& d, const Map& m, const Drawing& dr, const DiagramEmbedding& options) {
 
   // Edge numbering of pd(): along each component, edge k leaves passage k.
   std::vector<int> out_edge(d.passages.size());
@@ -219,5 +244,7 @@ Curve<3> curve_from_diagram(const KnotDiagram& d, const DiagramEmbedding& option
   if (options.relax_iterations > 0) curve = relax(curve, options.relax_iterations);
   return curve;
 }
+
+}  // namespace
 
 }  // namespace s4d

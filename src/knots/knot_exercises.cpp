@@ -8,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "knots/knot_table.hpp"
-#include "knots/regina_link.hpp"
 
 namespace s4d {
 
@@ -199,26 +198,20 @@ UnknottingReport unknotting_crossings(const Curve<3>& curve, const std::optional
     throw Error("the unknotting exercise needs a knot; this curve has " +
                 std::to_string(d.component_count()) + " components");
   r.frame = used;
-  IdentifyOptions o;
+  NamingOptions o;
   o.frame = used;
-  o.choose_view = false;
-  const KnotIdentification id = identify_diagram(d, o);
-  r.knot = id.name;
-  r.is_unknot = id.kind == KnotKind::kUnknot && id.proven;
+  const KnotNaming knot = name_diagram(d, o);
+  r.knot = knot.name();
+  r.is_unknot = knot.identification.kind == KnotKind::kUnknot && knot.proven();
   for (int k = 0; k < d.crossing_count(); ++k) {
     CrossingChangeResult c;
     c.label = k + 1;
     c.point = d.crossings[k].point;
-    const KnotDiagram changed = d.with_crossing_changed(k);
-    const KnotIdentification after = identify_diagram(changed, o);
-    if (after.kind == KnotKind::kUnknot) {
-      c.unknots = after.proven || is_unknot(changed, true);
-    } else {
-      c.unknots = false;  // a non-trivial HOMFLY-PT polynomial: knotted
-    }
-    c.result = c.unknots                         ? "unknot"
-               : after.kind == KnotKind::kUnknot ? "not the unknot (its complement is not a solid torus)"
-                                                 : after.name;
+    // Named as everywhere else: an unknot by its invariants is proven (or refuted) by recognition.
+    const KnotNaming after = name_diagram(d.with_crossing_changed(k), o);
+    c.unknots = after.identification.kind == KnotKind::kUnknot && after.proven();
+    c.proven = after.identification.kind != KnotKind::kUnknot || after.proven();
+    c.result = after.name();
     if (c.unknots) r.unknotting.push_back(c.label);
     r.crossings.push_back(std::move(c));
   }

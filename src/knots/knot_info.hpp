@@ -16,18 +16,13 @@
 
 #include "core/frame.hpp"
 #include "knots/knot_identify.hpp"
+#include "knots/knot_naming.hpp"
 #include "shape/curve.hpp"
 
 namespace s4d {
 
-struct KnotInfoOptions {
-  // Try the further invariants when candidates remain (or an unknot is not yet proven). These can
-  // take from milliseconds to seconds; without them knot_info stays within the live budget.
-  bool refine = true;
-  int max_cover_index = 5;           // covers of the knot group of index 2 .. this (<= 7)
-  int rewrite_height = 1;            // Reidemeister search: extra crossings allowed (0: none)
-  const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
-};
+// The naming's options (fast, cover indices, tables); the view is knot_info's argument.
+using KnotInfoOptions = NamingOptions;
 
 struct KnotInfo {
   // In the view
@@ -43,34 +38,28 @@ struct KnotInfo {
   std::int64_t determinant = 0;
   // The name
   std::string name;                       // "3_1 (DT 3a_1) mirror", "11n_34", "unknot", a link's line
+  std::string headline;                   // the name as shown: with "[not proven]", "[fast: ... skipped]"
   std::string chirality;                  // a sentence: which of the knot and its mirror this is
   std::vector<std::string> candidates;    // every answer still possible (one when decided)
   bool proven = false;                    // no other answer is possible
   std::vector<std::string> decided_by;    // the invariants and proofs that decided it, in order
   std::vector<std::string> further_used;  // the further invariants tried (decisive or not)
+  std::vector<std::string> skipped;       // fast: the further invariants left out
   KnotIdentification identification;      // everything, for callers that want more
   double milliseconds = 0;                // time taken
 };
 
-// The curve as seen through `view` (nullopt: its own xy, i.e. the identity Frame<3>). Throws
+// The curve as seen through `view` (nullopt: its own xy, i.e. the identity Frame<3>): its codes in
+// that view, and its name from name_knot (knot_naming.hpp), starting from that view. Throws
 // s4d::Error for an invalid curve (open, too short, touching itself; see diagram_from_curve).
-// Without refinement a 500-point, <= 12-crossing curve takes well under 5 ms; with it, when
-// candidates remain, up to seconds: always call it off the UI thread (KnotInfoWorker).
+// Fast, a 500-point, <= 12-crossing curve takes well under 5 ms; with the refinements, when
+// candidates remain, up to about a second: call it off the UI thread (KnotInfoWorker).
 KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view = std::nullopt,
                    const KnotInfoOptions& options = {});
 
-// The further invariants on an identification whose candidates remain: candidates whose knot
-// groups have different numbers (or homology) of covers of index 2..max are dropped, and a
-// Reidemeister search from the simplified diagram to a candidate's table diagram proves it; an
-// unproven unknot is proven or refuted by recognising its complement as a solid torus. Updates
-// `id` (candidates, proven, name) and appends what was used to `used` and what decided to
-// `decided`.
-void refine_identification(KnotIdentification& id, const KnotInfoOptions& options,
-                           std::vector<std::string>& used, std::vector<std::string>& decided);
-
 // Cover signature of a knot diagram's group: per index 2..max_index, the sorted homology groups
 // of its connected covers of that index ("2: Z + Z_3; 3: ..."). Equal for the same knot (and its
-// mirror); exact, and slow beyond index 6.
+// mirror); exact (Regina), and slow beyond index 6.
 std::string cover_signature(const KnotDiagram& diagram, int max_index);
 
 // Runs knot_info on its own thread. submit() replaces any request not yet started and returns at

@@ -688,6 +688,27 @@ TEST(GuiSmoke, TheSameKnotExerciseJudgesTheUsersAnswer) {
   EXPECT_FALSE(answered["knot_panels"]["name_hidden"].get<bool>()) << "answered: the names are shown";
 }
 
+// The Knot panel's toolbar: Mirror turns the trefoil into its mirror image (the panel names it so),
+// Ctrl+Z puts it back; both are one step each.
+TEST(GuiSmoke, TheKnotPanelsMirrorIsOneUndoableStep) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const KnotRun run{std::filesystem::temp_directory_path() / "s4d_gui_knot_toolbar"};
+  const auto start = run("start", {"3 move 100 700", "8 wait"});
+  const std::string named = start["knot_panel_name"];
+  ASSERT_EQ(named.rfind("3_1", 0), 0u) << named;
+  ASSERT_TRUE(start["knot_panels"]["buttons"].contains("Mirror")) << start["knot_panels"];
+  const auto mirror = click(10, start["knot_panels"]["buttons"]["Mirror"]) + std::vector<std::string>{"16 wait", "22 wait"};
+  const auto mirrored = run("mirrored", mirror);
+  const std::string m = mirrored["knot_panel_name"];
+  const bool was_mirror = named.find("mirror") != std::string::npos;
+  EXPECT_EQ(m.find("mirror") != std::string::npos, !was_mirror) << named << " became " << m;
+  EXPECT_EQ(mirrored["status"].get<std::string>().rfind("mirror '", 0), 0u) << mirrored["status"];
+  const auto undone = run("undone", mirror + std::vector<std::string>{"30 key-down LEFT_CONTROL", "31 key Z",
+                                                                      "32 key-up LEFT_CONTROL", "36 wait", "40 wait"});
+  EXPECT_EQ(undone["knot_panel_name"].get<std::string>(), named);
+}
+
 // Touch and sound only (H): the Knot panel no longer names the knot nor gives its codes.
 TEST(GuiSmoke, TouchAndSoundOnlyHidesTheKnotsName) {
   const char* display = std::getenv("DISPLAY");

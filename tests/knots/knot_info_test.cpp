@@ -125,7 +125,7 @@ TEST(KnotInfo, CandidatesAndProofsAreReportedHonestly) {
   // HOMFLY-PT, Jones and Alexander polynomials.
   const Curve<3> conway = make_table_knot("11n_34");
   KnotInfoOptions plain;
-  plain.refine = false;
+  plain.fast = true;
   const KnotInfo p = knot_info(conway, std::nullopt, plain);
   EXPECT_FALSE(p.proven);
   EXPECT_EQ(p.candidates, (std::vector<std::string>{"11n_34", "11n_42"}));

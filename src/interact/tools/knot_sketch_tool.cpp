@@ -5,7 +5,7 @@
 #include "core/error.hpp"
 #include "interact/session/session.hpp"
 #include "knots/knot_diagram.hpp"
-#include "knots/knot_identify.hpp"
+#include "knots/knot_naming.hpp"
 
 namespace s4d {
 
@@ -263,7 +263,9 @@ bool KnotSketchTool::finish(Session& s) {
     raw.points.emplace_back(comps[0].points[i].x(), comps[0].points[i].y(), comps[0].choices[i] == CrossChoice::kUnder ? 1.0 : 0.0);
   last_stroke_.components.push_back(std::move(raw));
   try {
-    last_name_ = identify_knot(shape).name;
+    NamingOptions fast;  // on the UI thread: the fast naming, saying what it skipped (the Knot panel goes on)
+    fast.fast = true;
+    last_name_ = name_knot(shape, fast).headline();
   } catch (const std::exception& e) {
     last_name_ = std::string("(not named: ") + e.what() + ")";
   }
