@@ -1,5 +1,6 @@
 // The naming decision: the polynomials name a curve or leave candidates (knot_identify), then the
 // refinements drop candidates or prove the one left; every step says what it used.
+// Sections: [SECTION] texts, [SECTION] refinements, [SECTION] naming.
 #include "knots/knot_naming.hpp"
 
 #include <algorithm>
