@@ -36,6 +36,7 @@ int launch_gui(const GuiLaunch& launch) {
   options.exercise_seed = launch.exercise_seed;
   options.width = launch.width;
   options.height = launch.height;
+  options.ui_scale = launch.ui_scale;
   return run_gui_app(options);
 #else
   std::cerr << "shadow4d: this build has no GUI (configure with -DS4D_BUILD_GUI=ON)\n";

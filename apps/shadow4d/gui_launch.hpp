@@ -16,6 +16,7 @@ struct GuiLaunch {
   bool restore = false;
   unsigned exercise_seed = 0;
   int width = 1280, height = 800;
+  float ui_scale = 0;
 };
 // Returns the process exit code.
 int launch_gui(const GuiLaunch& launch);

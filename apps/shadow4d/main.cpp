@@ -1,6 +1,7 @@
 // shadow4d: with no sub-command opens the GUI (optionally on a file); sub-commands run headless.
 #include <spdlog/spdlog.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 
@@ -21,7 +22,7 @@ int main(int argc, char** argv) {
       ->group("GUI scripting");
   app.add_option("--input", gui.input,
                  "GUI: play timed mouse and key events from this file (lines 'FRAME EVENT ARGS': move X Y, "
-                 "move-by DX DY, move-to-vertex N [DX DY] (where simulated vertex N is on the screen then), "
+                 "move-by DX DY, move-view X Y (half-sides of the view from its centre), move-to-vertex N [DX DY] (where simulated vertex N is on the screen then), "
                  "press left, release left, scroll DY, key NAME, key-down NAME, key-up NAME, type TEXT, open SPEC, "
                  "shot FILE, dump FILE, quit, wait: until background work is done)")
       ->group("GUI scripting");
@@ -32,6 +33,19 @@ int main(int argc, char** argv) {
   app.add_option("--exercise-seed", gui.exercise_seed,
                  "GUI: the knot exercises' choices (0: at random; another number: the same every run, e.g. for a class)")
       ->group("GUI scripting");
+  std::string size;
+  app.add_option("--size", size, "GUI: the window's size in pixels, WxH (default 1280x800)")
+      ->check([](const std::string& v) {
+        int w = 0, h = 0;
+        char x = 0;
+        return std::sscanf(v.c_str(), "%d%c%d", &w, &x, &h) == 3 && (x == 'x' || x == 'X') && w >= 200 && h >= 150 &&
+                       w <= 16384 && h <= 16384
+                   ? std::string()
+                   : std::string("--size wants WxH, e.g. 1280x800 (200x150 to 16384x16384)");
+      });
+  app.add_option("--ui-scale", gui.ui_scale,
+                 "GUI: the panels' and fonts' scale as if the monitor's content scale were this (default: the monitor's)")
+      ->check(CLI::Range(0.5, 4.0));
   app.add_flag("--restore", gui.restore, "GUI: take up the autosave a crashed or killed run left, without asking");
   app.add_option(
       "--device", gui.device,
@@ -43,6 +57,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     spdlog::set_level(verbose ? spdlog::level::debug : spdlog::level::info);
+    if (!size.empty()) {
+      char x = 0;
+      std::sscanf(size.c_str(), "%d%c%d", &gui.width, &x, &gui.height);
+    }
     if (app.get_subcommands().empty()) return s4d::cli::launch_gui(gui);
   } catch (const CLI::ParseError& e) {
     // --help is 0; a usage error (CLI11's own codes, 100 and up) is the README's 1, its message

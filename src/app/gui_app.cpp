@@ -2,7 +2,7 @@
 // view -> panels -> scene drawing and tool overlays -> ImGui -> swap.
 //
 // [SECTION] view rays and overlays   [SECTION] input routing   [SECTION] scripted commands
-// [SECTION] the loop
+// [SECTION] status line   [SECTION] the loop
 #include "app/gui_app.hpp"
 
 #include <GLFW/glfw3.h>
@@ -10,7 +10,9 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -19,10 +21,13 @@
 #include <utility>
 #include <nlohmann/json.hpp>
 
+#include "app/dock.hpp"
 #include "app/haptics_window.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
 #include "app/screen.hpp"
+#include "app/start_page.hpp"
+#include "app/tool_registry.hpp"
 #include "app/tool_settings.hpp"
 #include "app/window_dump.hpp"
 #include "interact/tools/knot_sketch_tool.hpp"
@@ -50,8 +55,11 @@ Vec2 window_size(GLFWwindow* window) {
 }
 
 // [SECTION] view rays and overlays
-ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window, const Frame<4>& frame) {
+// The tools see the 3D view's rectangle as their window: pixels from its corner.
+ToolView tool_view(const Camera& camera, const Vec2& cursor, const Rect& view, const Frame<4>& frame) {
   ToolView v;
+  const Vec2 size(std::max(view.w, 1.0f), std::max(view.h, 1.0f));
+  const Vec2 local = cursor - Vec2(view.x, view.y);
   const Eigen::Quaterniond q = camera.orientation.normalized();
   v.eye = camera.eye();
   v.right = q * Vec3::UnitX();
@@ -59,21 +67,21 @@ ToolView tool_view(const Camera& camera, const Vec2& cursor, const Vec2& window,
   v.toward_eye = q * Vec3::UnitZ();
   v.centre = camera.target;
   const double t = std::tan(camera.fov_y / 2);
-  const Vec3 d_eye(camera.aspect * t * (2 * cursor.x() / window.x() - 1), t * (1 - 2 * cursor.y() / window.y()), -1);
+  const Vec3 d_eye(camera.aspect * t * (2 * local.x() / size.x() - 1), t * (1 - 2 * local.y() / size.y()), -1);
   v.ray = (q * d_eye).normalized();
-  v.pixel_size = 2 * camera.distance * t / window.y();
-  v.cursor = cursor;
-  v.window = window;
+  v.pixel_size = 2 * camera.distance * t / size.y();
+  v.cursor = local;
+  v.window = size;
   v.frame = frame;
   v.camera = camera;
   return v;
 }
 
 // The input file's move-to-vertex: the pointer to the vertex's pixel now (the last frame's view).
-void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, const Camera& camera, const Vec2& window) {
+void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, const Camera& camera) {
   ImVec2 px;
   const Vec4 p = model.session.vertex_view(e.vertex);
-  if (!p.allFinite() || !to_screen(camera, p.head<3>(), window, px)) {
+  if (!p.allFinite() || !to_screen(camera, p.head<3>(), model.layout.view, px)) {
     model.status = "the input file's vertex " + std::to_string(e.vertex) + " is not on the screen";
     return;
   }
@@ -81,114 +89,173 @@ void move_to_vertex(WindowInput& input, GuiModel& model, const InputEvent& e, co
   model.grab.prefer_depth(p.w());  // its sheet, where the shadow folds others onto it
 }
 
+// The input file's move-view: a point of the view in half-sides (of its smaller side) from its
+// centre, Y up: the view's ball, which the projection fits to that side, spans the same.
+void move_to_view_point(WindowInput& input, const Rect& view, const Vec2& at) {
+  const double half = std::min(view.w, view.h) / 2;
+  input.move_to(Vec2(view.x + view.w / 2 + at.x() * half, view.y + view.h / 2 - at.y() * half));
+}
 
-void draw_overlay(const Overlay& o, const Camera& camera, const Vec2& window) {
+void draw_overlay(const Overlay& o, const Camera& camera, const Rect& view) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  dl->PushClipRect(ImVec2(view.x, view.y), ImVec2(view.right(), view.bottom()), true);
   for (const auto& l : o.lines) {
     ImVec2 a, b;
-    if (to_screen(camera, l.a, window, a) && to_screen(camera, l.b, window, b)) dl->AddLine(a, b, l.rgba, l.width);
+    if (to_screen(camera, l.a, view, a) && to_screen(camera, l.b, view, b)) dl->AddLine(a, b, l.rgba, l.width);
   }
   for (const auto& d : o.dots) {
     ImVec2 a;
-    if (!to_screen(camera, d.at, window, a)) continue;
+    if (!to_screen(camera, d.at, view, a)) continue;
     if (d.filled) dl->AddCircleFilled(a, d.radius, d.rgba, 16);
     else dl->AddCircle(a, d.radius, d.rgba, 24, 2.0f);
   }
-  for (const auto& l : o.screen_lines)
-    dl->AddLine(ImVec2(static_cast<float>(l.a.x()), static_cast<float>(l.a.y())),
-                ImVec2(static_cast<float>(l.b.x()), static_cast<float>(l.b.y())), l.rgba, l.width);
+  for (const auto& l : o.screen_lines)  // in the view's pixels
+    dl->AddLine(ImVec2(view.x + static_cast<float>(l.a.x()), view.y + static_cast<float>(l.a.y())),
+                ImVec2(view.x + static_cast<float>(l.b.x()), view.y + static_cast<float>(l.b.y())), l.rgba, l.width);
+  dl->PopClipRect();
 }
 
 // [SECTION] input routing
 struct Routing {
   bool tool_drag = false;  // the left button belongs to the tool until it is released
   bool view_drag = false;  // ... or to the view
+  bool right_down = false, right_panned = false;  // a right press is a click unless it drags
+  Vec2 right_at = Vec2::Zero();
+  bool middle_pan = false;
 };
 
-void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, const Vec2& window,
-                 const Camera& camera, KnotPanels& knots) {
-  const ImGuiIO& io = ImGui::GetIO();
+// Moves the picture by (dx, dy) pixels of the view.
+void pan_pixels(GuiModel& model, const ToolView& v, double dx, double dy) {
+  const double r = model.fit.radius > 0 ? model.fit.radius : 1;
+  model.view.pan_by(dx * v.pixel_size / r, -dy * v.pixel_size / r);
+}
+
+// The keys of the whole window: quitting, undo, play, the tools' keys, framing and panning.
+void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const ToolInput& ti) {
   Session& session = model.session;
   Tool* tool = model.active_tool();
-  if (!io.WantTextInput) {
-    if (in.key_pressed(GLFW_KEY_ESCAPE) && !(tool && tool->key(ToolKey::kEscape, ti, session))) {
-      if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
-    }
-    if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
-    if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) Panels::undo_or_redo(model, in.shift());
-    if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
-    if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
-      const bool playing = session.snapshot()->status.playing;
-      session.send(playing ? live::Request(live::Pause{}) : live::Request(live::Play{}));
-      model.status = playing ? "paused (Space plays)" : "playing (Space pauses)";
-    }
-    if (!r.tool_drag) {
-      if (in.key_pressed(GLFW_KEY_T)) model.choose(ToolChoice::kTouch);
-      if (in.key_pressed(GLFW_KEY_E)) model.choose(ToolChoice::kExplore);
-      if (in.key_pressed(GLFW_KEY_R)) model.choose(ToolChoice::kSketchRibbon);
-      if (in.key_pressed(GLFW_KEY_K)) model.choose(ToolChoice::kSketchKnot);
-    }
-    if (in.key_pressed(GLFW_KEY_H)) {
-      model.touch_and_sound_only = !model.touch_and_sound_only;
-      model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
-    }
-    if (in.key_pressed(GLFW_KEY_L) && !r.tool_drag) Panels::toggle_relax(model);  // the knot energy, live
-    if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
-      session.record("change the drawing");
-      CurveMode& mode = model.scene().view.curve_mode;
-      mode = mode == CurveMode::kTubes ? CurveMode::kShadow : mode == CurveMode::kShadow ? CurveMode::kDiagram : CurveMode::kTubes;
-      model.status = std::string("curves drawn as: ") + curve_mode_name(mode);
-    }
-    tool = model.active_tool();
-    if (tool && in.key_pressed(GLFW_KEY_TAB)) tool->key(ToolKey::kTab, ti, session);
-    if (tool && in.key_pressed(GLFW_KEY_P)) tool->key(ToolKey::kPin, ti, session);
-    if (tool && in.key_pressed(GLFW_KEY_BACKSPACE)) tool->key(ToolKey::kBackspace, ti, session);
-    if (tool && in.key_pressed(GLFW_KEY_C)) tool->key(ToolKey::kCarry, ti, session);
-    if (tool && in.key_pressed(GLFW_KEY_LEFT_BRACKET)) tool->key(ToolKey::kSmaller, ti, session);
-    if (tool && in.key_pressed(GLFW_KEY_RIGHT_BRACKET)) tool->key(ToolKey::kLarger, ti, session);
-    if (tool && (in.key_pressed(GLFW_KEY_ENTER) || in.key_pressed(GLFW_KEY_KP_ENTER)))
-      tool->key(ToolKey::kEnter, ti, session);
+  if (in.key_pressed(GLFW_KEY_ESCAPE) && !(tool && tool->key(ToolKey::kEscape, ti, session))) {
+    if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
   }
+  if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
+  if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) Panels::undo_or_redo(model, in.shift());
+  if (in.ctrl() && in.key_pressed(GLFW_KEY_Y) && !r.tool_drag) Panels::undo_or_redo(model, true);
+  if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;
+  if (in.key_pressed(GLFW_KEY_F1) || in.key_pressed(GLFW_KEY_SLASH)) model.show_keys = !model.show_keys;
+  if (in.key_pressed(GLFW_KEY_SPACE) && session.snapshot()) {
+    const bool playing = session.snapshot()->status.playing;
+    session.send(playing ? live::Request(live::Pause{}) : live::Request(live::Play{}));
+    model.status = playing ? "paused (Space plays)" : "playing (Space pauses)";
+  }
+  if (!r.tool_drag && !in.ctrl())
+    for (const ToolEntry& e : tool_entries())
+      if (in.key_pressed(e.key)) model.choose(e.id);
+  if (in.key_pressed(GLFW_KEY_F) && !in.ctrl()) model.want_frame = true;
+  const double step = 0.08 * ti.view.window.y();  // an arrow key pans by a twelfth of the view
+  if (in.key_pressed(GLFW_KEY_LEFT)) pan_pixels(model, ti.view, -step, 0);
+  if (in.key_pressed(GLFW_KEY_RIGHT)) pan_pixels(model, ti.view, step, 0);
+  if (in.key_pressed(GLFW_KEY_UP)) pan_pixels(model, ti.view, 0, -step);
+  if (in.key_pressed(GLFW_KEY_DOWN)) pan_pixels(model, ti.view, 0, step);
+  if (in.key_pressed(GLFW_KEY_H)) {
+    model.touch_and_sound_only = !model.touch_and_sound_only;
+    model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
+  }
+  if (in.key_pressed(GLFW_KEY_L) && !r.tool_drag) Panels::toggle_relax(model);  // the knot energy, live
+  if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
+    session.record("change the drawing");
+    CurveMode& mode = model.scene().view.curve_mode;
+    mode = mode == CurveMode::kTubes ? CurveMode::kShadow : mode == CurveMode::kShadow ? CurveMode::kDiagram : CurveMode::kTubes;
+    model.status = std::string("curves drawn as: ") + curve_mode_name(mode);
+  }
+}
+
+// The keys the active tool takes.
+void tool_keys(Tool& tool, const WindowInput& in, const ToolInput& ti, Session& session) {
+  static constexpr std::pair<int, ToolKey> kKeys[] = {
+      {GLFW_KEY_TAB, ToolKey::kTab},          {GLFW_KEY_P, ToolKey::kPin},
+      {GLFW_KEY_BACKSPACE, ToolKey::kBackspace}, {GLFW_KEY_C, ToolKey::kCarry},
+      {GLFW_KEY_LEFT_BRACKET, ToolKey::kSmaller}, {GLFW_KEY_RIGHT_BRACKET, ToolKey::kLarger},
+      {GLFW_KEY_ENTER, ToolKey::kEnter},      {GLFW_KEY_KP_ENTER, ToolKey::kEnter}};
+  for (const auto& [key, what] : kKeys)
+    if (in.key_pressed(key) && !in.ctrl()) tool.key(what, ti, session);
+}
+
+// The right button: a click (released where it was pressed) changes the crossing under it or goes
+// to the tool (pin); a drag pans, as the middle button's does.
+void right_and_middle(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, bool captured,
+                      KnotPanels& knots) {
+  Session& session = model.session;
+  if (in.pressed(1) && !captured) {
+    r.right_down = true, r.right_panned = false;
+    r.right_at = in.cursor();
+  }
+  if (in.pressed(2) && !captured) r.middle_pan = true;
+  const Vec2 d = in.cursor_delta();
+  if (r.right_down && in.down(1) && (r.right_panned || (in.cursor() - r.right_at).norm() > 4)) {
+    pan_pixels(model, ti.view, r.right_panned ? d.x() : (in.cursor() - r.right_at).x(),
+               r.right_panned ? d.y() : (in.cursor() - r.right_at).y());
+    r.right_panned = true;
+  }
+  if (r.middle_pan && in.down(2)) pan_pixels(model, ti.view, d.x(), d.y());
+  if (!in.down(2)) r.middle_pan = false;
+  if (r.right_down && (in.released(1) || !in.down(1))) {
+    r.right_down = false;
+    if (r.right_panned) return;
+    std::string message;
+    const auto c = crossing_under(ti.view, model.scene());
+    const bool exercise = c && knots.exercise_crossing(model, c->object, c->over);
+    if (change_crossing_under(ti.view, session, message)) model.status = exercise ? knots.exercise_message() : message;
+    else if (Tool* tool = model.active_tool()) tool->right_click(ti, session);
+  }
+}
+
+void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolInput& ti, KnotPanels& knots) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Session& session = model.session;
+  if (!io.WantTextInput) {
+    window_keys(model, r, in, ti);
+    if (Tool* tool = model.active_tool()) tool_keys(*tool, in, ti, session);
+  }
+  Tool* tool = model.active_tool();
   // A device's button does what the active tool does with a press (grab, explore, or draw itself).
   session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone, tool ? tool->device_carry_radius() : 0);
   if (tool) tool->update(ti, session);
-  const bool captured = io.WantCaptureMouse && !r.tool_drag && !r.view_drag;
+  const bool over_view = model.layout.view.contains(static_cast<float>(in.cursor().x()), static_cast<float>(in.cursor().y()));
+  const bool captured = (io.WantCaptureMouse || !over_view) && !r.tool_drag && !r.view_drag;
   if (in.released(0) || !in.down(0)) {
     if (r.tool_drag && tool) tool->release(ti, session);
     r.tool_drag = r.view_drag = false;
   }
+  right_and_middle(model, r, in, ti, captured, knots);
   if (!captured) {
     if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
-    if (in.pressed(1)) {
-      std::string message;
-      const auto c = crossing_under(ti.view, model.scene());
-      const bool exercise = c && knots.exercise_crossing(model, c->object, c->over);
-      if (change_crossing_under(ti.view, session, message)) model.status = exercise ? knots.exercise_message() : message;
-      else if (tool) tool->right_click(ti, session);
-    }
-    {
-      if (in.pressed(0)) {
-        // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
-        // "below"; otherwise a press on a surface goes to the tool.
-        const bool sketch = model.tool == ToolChoice::kSketchRibbon || model.tool == ToolChoice::kSketchKnot;
-        const bool navigate = (in.shift() && !sketch) || in.ctrl();
-        r.tool_drag = tool && !navigate && tool->press(ti, session);
-        r.view_drag = !r.tool_drag;
-        if (r.view_drag && navigate) session.record("turn in 4D");  // the 4D frame is the user's work
-      } else if (in.down(0) && r.tool_drag) {
-        tool->drag(ti, session);
-      } else if (in.down(0) && r.view_drag) {
-        const Vec2 d = in.cursor_delta();
-        const DragMode mode = in.shift() ? DragMode::kRotateW : in.ctrl() ? DragMode::kRotateZW : DragMode::kTrackball;
-        model.view.drag(mode, d.x(), d.y(), window.y());
-      } else if (!in.down(0) && tool) {
-        tool->hover(ti, session);
-      }
+    if (in.pressed(0)) {
+      // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
+      // "below"; otherwise a press on a surface goes to the tool.
+      const bool sketch = model.tool == ToolChoice::kSketchRibbon || model.tool == ToolChoice::kSketchKnot;
+      const bool navigate = (in.shift() && !sketch) || in.ctrl();
+      r.tool_drag = tool && !navigate && tool->press(ti, session);
+      r.view_drag = !r.tool_drag;
+      if (r.view_drag && navigate) session.record("turn in 4D");  // the 4D frame is the user's work
+    } else if (in.down(0) && r.tool_drag) {
+      tool->drag(ti, session);
+    } else if (in.down(0) && r.view_drag) {
+      const Vec2 d = in.cursor_delta();
+      const DragMode mode = in.shift() ? DragMode::kRotateW : in.ctrl() ? DragMode::kRotateZW : DragMode::kTrackball;
+      model.view.drag(mode, d.x(), d.y(), ti.view.window.y());
+    } else if (!in.down(0) && tool) {
+      tool->hover(ti, session);
     }
   }
   if (tool) {
     const std::string m = tool->take_message();
     if (!m.empty()) model.status = m;
+    if (tool->take_finished()) {  // a sketch made its object: back to Touch, with it in view
+      const std::string made = model.status;
+      model.choose(ToolChoice::kTouch);
+      model.status = made + " (the tool is Touch again)";
+      model.want_frame = true;
+    }
   }
   // The explorer's passes as sound: high above in w, low below.
   for (const SceneEvent& e : model.explore.take_new_passes())
@@ -207,18 +274,58 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
 }
 
+// [SECTION] status line
+// The status line: the tools (the active one lit), then the last message, cut to fit (whole in
+// its tooltip and in View > Messages).
+void status_line(GuiModel& model) {
+  const Rect& r = model.layout.status;
+  if (r.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4 * model.ui_scale, 2 * model.ui_scale));
+  ImGui::Begin("##status line", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                             ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PopStyleVar();
+  for (const ToolEntry& e : tool_entries()) {
+    const bool active = model.tool == e.id;
+    if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    const std::string label = std::string(e.label) + " (" + e.key_name + ")";
+    if (ImGui::SmallButton(label.c_str())) model.choose(active ? ToolChoice::kTouch : e.id);
+    if (active) ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
+    ImGui::SameLine();
+  }
+  ImGui::TextDisabled("|");
+  ImGui::SameLine();
+  const float room = ImGui::GetContentRegionAvail().x;
+  std::string shown = model.status;
+  if (ImGui::CalcTextSize(shown.c_str()).x > room) {
+    while (!shown.empty() && ImGui::CalcTextSize((shown + "...").c_str()).x > room) shown.pop_back();
+    shown += "...";
+  }
+  ImGui::TextUnformatted(shown.c_str());
+  if (ImGui::IsItemHovered() && shown != model.status) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+    ImGui::TextUnformatted(model.status.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+  if (ImGui::IsItemClicked()) model.show_messages = true;
+  ImGui::End();
+}
+
 // The knot explorer's Gauss code, built up as crossings are passed (the paper's students asked for
 // it), large enough to read at a glance — also with the picture hidden.
 void explore_panel(GuiModel& model) {
   if (model.tool != ToolChoice::kExplore || !model.explore.on_curve()) return;
-  ImGui::SetNextWindowPos(ImVec2(360, 30), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Explore", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!model.dock.begin(Side::kRight, "Explore")) return;
   const std::string code = model.explore.gauss_so_far();
   ImGui::SetWindowFontScale(1.6f);
-  ImGui::TextUnformatted(code.empty() ? "(no crossing passed yet)" : code.c_str());
+  ImGui::TextWrapped("%s", code.empty() ? "(no crossing passed yet)" : code.c_str());
   ImGui::SetWindowFontScale(1.0f);
   ImGui::TextDisabled("%zu crossing(s) passed: + over, - under", model.explore.passes().size());
-  ImGui::End();
+  model.dock.end();
 }
 
 // F12's screenshot: the picture without the panels.
@@ -276,6 +383,7 @@ void frame_the_fit(GuiModel& model) {
   bool in_r4 = false;
   for (const SceneObject& o : scene.objects) in_r4 = in_r4 || ambient_dim(o.shape) == 4;
   scene.view.fit_centre = in_r4 ? Vec3(scene.frame.shadow(model.fit.centre)) : Vec3(model.fit.centre.head<3>());
+  scene.view.fit_centre += model.view.pan_offset(model.fit.radius);
   scene.view.fit_radius = model.fit.radius;
 }
 
@@ -289,6 +397,7 @@ class GuiApp {
     input_.attach(window);
     input_.set_script(std::move(script));
     connect_session();
+    model_.autosave_path = autosaver_.path().string();
     open_first();
     offer_unfinished_autosave();
     sent_frame_.rotate(Plane{0, 1}, 1.0);  // anything but the scene's: the first frame is sent
@@ -301,23 +410,25 @@ class GuiApp {
   int run() {
     for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
       glfwPollEvents();
+      update_ui_scale();
       take_script_events();
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       input_.write_to_imgui();
       ImGui::NewFrame();
-      const Vec2 win = window_size(window_);
+      lay_out(window_size(window_));
       update_session();
-      const ToolInput ti = tool_input(win);
+      const ToolInput ti = tool_input();
       sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
-      route_input(model_, routing_, input_, ti, win, renderer_.camera(), knot_panels_);
-      draw_panels(win);
+      route_input(model_, routing_, input_, ti, knot_panels_);
+      draw_panels();
+      keep_messages();
       ImGui::Render();
       const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
       draw_scene_and_shots(last);
       if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
       model_.knot_panel_name = knot_panels_.shown_name();
-      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, path, renderer_.camera(), win, frame);
+      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, path, renderer_.camera(), frame);
       dumps_.clear();
       glfwSwapBuffers(window_);
       if (last) break;
@@ -354,7 +465,15 @@ class GuiApp {
   }
 
   void open_first() {
-    Panels::open(model_, options_.open_spec.empty() ? "clifford-torus" : options_.open_spec);
+    if (options_.open_spec.empty()) {  // no file: the start page, over an empty scene
+      Document d;
+      d.spec = "an empty scene";
+      Panels::open(model_, std::move(d));
+      model_.start_page = true;
+      model_.status = "choose an example, an exercise or a sketch; F1 lists the keys";
+      return;
+    }
+    Panels::open(model_, options_.open_spec);
     if (!model_.error.empty() && !options_.open_spec.empty()) {
       std::cerr << "shadow4d: " << model_.error << "\n";
       exit_code_ = 1;
@@ -393,9 +512,60 @@ class GuiApp {
       else if (e.kind == InputEvent::Kind::dump) dumps_.push_back(e.text);
       else if (e.kind == InputEvent::Kind::quit) model_.quit = true;
       else if (e.kind == InputEvent::Kind::wait) waiting_ = true, wait_start_ = std::chrono::steady_clock::now();
-      else if (e.kind == InputEvent::Kind::move_to_vertex)
-        move_to_vertex(input_, model_, e, renderer_.camera(), window_size(window_));
+      else if (e.kind == InputEvent::Kind::move_to_vertex) move_to_vertex(input_, model_, e, renderer_.camera());
+      else if (e.kind == InputEvent::Kind::move_view) move_to_view_point(input_, model_.layout.view, e.at);
     }
+  }
+
+  // The monitor's content scale (or --ui-scale) times View > UI scale: the font is rasterised at
+  // that size and the style's sizes follow, before the frame begins.
+  void update_ui_scale() {
+    float sx = 1, sy = 1;
+    glfwGetWindowContentScale(window_, &sx, &sy);
+    const float monitor = options_.ui_scale > 0 ? options_.ui_scale : std::max(1.0f, std::max(sx, sy));
+    if (!std::isfinite(model_.ui_scale_setting)) model_.ui_scale_setting = 1;
+    model_.ui_scale_setting = std::clamp(model_.ui_scale_setting, 0.5f, 3.0f);
+    const float scale = std::clamp(monitor * model_.ui_scale_setting, 0.5f, 4.0f);
+    if (std::abs(scale - applied_scale_) < 0.01f) return;
+    applied_scale_ = scale;
+    model_.ui_scale = scale;
+    ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
+    ImFontConfig font;
+    font.SizePixels = std::round(13.0f * scale);
+    io.Fonts->AddFontDefault(&font);
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;  // the panels are beside the view, not over it
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+  }
+
+  // This frame's layout: the columns, the instruction band (as many lines as the text needs), the
+  // status line and the view.
+  void lay_out(const Vec2& win) {
+    LayoutInput in;
+    in.width = static_cast<float>(win.x());
+    in.height = static_cast<float>(win.y());
+    in.scale = model_.ui_scale;
+    in.menu_height = ImGui::GetFrameHeight();
+    in.line_height = ImGui::GetTextLineHeightWithSpacing();
+    in.left_open = model_.left_open && model_.dock.wanted(Side::kLeft) && !model_.start_page;
+    in.right_open = model_.right_open && model_.dock.wanted(Side::kRight) && !model_.start_page;
+    in.start_page = model_.start_page;
+    const Layout first = compute_layout(in);
+    in.band_lines = model_.start_page ? 0 : instruction_lines(model_, first.view.w);
+    model_.layout = compute_layout(in);
+    model_.dock.place(model_.layout);
+  }
+
+  void keep_messages() {
+    if (model_.status == last_status_) return;
+    last_status_ = model_.status;
+    if (!last_status_.empty()) model_.messages.push_back(last_status_);
+    if (model_.messages.size() > 500) model_.messages.erase(model_.messages.begin());
   }
 
   void update_session() {
@@ -408,13 +578,14 @@ class GuiApp {
       objects_seen_ = model_.scene().objects.size();
       model_.fit = enclosing(model_.fit, fit_of(model_.scene()));
     }
+    if (std::exchange(model_.want_frame, false)) frame_all(model_);
     model_.view.apply_to(model_.scene());
     frame_the_fit(model_);
   }
 
-  ToolInput tool_input(const Vec2& win) {
+  ToolInput tool_input() {
     ToolInput ti;
-    ti.view = tool_view(renderer_.camera(), input_.cursor(), win, model_.session.scene().frame);
+    ti.view = tool_view(renderer_.camera(), input_.cursor(), model_.layout.view, model_.session.scene().frame);
     ti.shift = input_.shift();
     ti.ctrl = input_.ctrl();
     ti.alt = input_.alt();
@@ -422,9 +593,18 @@ class GuiApp {
     return ti;
   }
 
-  void draw_panels(const Vec2& win) {
+  void draw_panels() {
     const Camera& camera = renderer_.camera();
+    const Rect& view = model_.layout.view;
     panels_.draw(model_, ImGui::GetIO().Framerate);
+    if (model_.start_page) {
+      if (!start_loaded_) start_page_.load(S4D_SCENARIOS_DIR, RecentFiles(std::filesystem::path(model_.autosave_path).parent_path() / "recent.txt"));
+      start_loaded_ = true;
+      start_page_.draw(model_);
+      status_line(model_);
+      return;
+    }
+    start_loaded_ = false;  // read again (the recent files) when it comes back
     knot_panels_.draw(model_, Frame<3>(camera.orientation.normalized().toRotationMatrix()));
     if (model_.open_knot_table) {
       model_.open_knot_table = false;
@@ -434,37 +614,52 @@ class GuiApp {
       model_.open_haptics = false;
       haptics_.open() = true;
     }
-    haptics_.draw(model_.session);
+    haptics_.draw(model_.session, model_.dock);
     explore_panel(model_);
+    model_.dock.draw_strips(model_.left_open, model_.right_open);
+    status_line(model_);
     if (Tool* tool = model_.active_tool(); tool && !model_.touch_and_sound_only) {
       Overlay overlay;
       tool->overlay(overlay, model_.session);
-      draw_overlay(overlay, camera, win);
+      draw_overlay(overlay, camera, view);
     }
-    knot_panels_.overlay(model_, camera, win);
+    knot_panels_.overlay(model_, camera, view);
   }
 
   // The scene, then the panels over it; the screenshots asked for this frame.
   void draw_scene_and_shots(bool last) {
     int fw = 0, fh = 0;
     glfwGetFramebufferSize(window_, &fw, &fh);
-    if (fw > 0 && fh > 0) {
+    glViewport(0, 0, fw, fh);
+    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // The view's rectangle in framebuffer pixels (a HiDPI framebuffer is larger than the window).
+    const Vec2 win = window_size(window_);
+    const double kx = fw / win.x(), ky = fh / win.y();
+    const Rect& v = model_.layout.view;
+    const int vx = static_cast<int>(std::lround(v.x * kx)), vw = static_cast<int>(std::lround(v.w * kx));
+    const int vh = static_cast<int>(std::lround(v.h * ky)), vy = fh - static_cast<int>(std::lround(v.y * ky)) - vh;
+    if (vw > 0 && vh > 0) {
       try {
-        renderer_.draw(model_.scene(), fw, fh);
+        renderer_.draw(model_.scene(), vw, vh, vx, vy);
         model_.intersections = renderer_.intersections();
         if (model_.touch_and_sound_only) {  // drawn for the panels' numbers, then hidden
           const Vec3f bg = model_.scene().view.background;
+          glEnable(GL_SCISSOR_TEST);
+          glScissor(vx, vy, vw, vh);
           glClearColor(bg.x(), bg.y(), bg.z(), 1.0f);
           glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+          glDisable(GL_SCISSOR_TEST);
         }
       } catch (const std::exception& e) {
         model_.error = e.what();
       }
       if (model_.want_screenshot) {  // the picture without the panels
         model_.want_screenshot = false;
-        save_shot(renderer_.read_pixels(fw, fh), model_.screenshot_path, model_);
+        save_shot(renderer_.read_pixels(vw, vh, vx, vy), model_.screenshot_path, model_);
       }
     }
+    glViewport(0, 0, fw, fh);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (last && !options_.window_shot.empty()) shots_.push_back(options_.window_shot);
     for (const std::string& path : shots_) {
@@ -487,12 +682,16 @@ class GuiApp {
   HapticsWindow haptics_;
   KnotPanels knot_panels_;
   GuiModel model_;
+  StartPage start_page_;
+  bool start_loaded_ = false;
   Autosaver autosaver_;
   Routing routing_;
   Frame<4> sent_frame_;
   DeviceMapping sent_mapping_;
   std::vector<std::string> shots_, dumps_;
   std::size_t objects_seen_ = 0;
+  float applied_scale_ = 0;
+  std::string last_status_;
   int script_frame_ = 0, waited_ = 0;
   bool waiting_ = false;
   std::chrono::steady_clock::time_point wait_start_{};
@@ -546,7 +745,6 @@ int run_gui_app(const GuiOptions& options) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
-  ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, false);  // WindowInput installs the callbacks
   ImGui_ImplOpenGL3_Init("#version 330 core");
   int exit_code = 0;

@@ -9,6 +9,7 @@ struct GuiOptions {
   int frames = 0;                // > 0: quit after this many frames (smoke tests, scripted shots)
   std::string window_shot;       // when set, the last frame (panels included) is saved here
   int width = 1280, height = 800;
+  float ui_scale = 0;            // > 0: the monitor's content scale as if it were this (--ui-scale)
   std::string device = "mouse";  // the haptic loop's device (--device)
   std::string input;             // an input file of timed events (see app/window_input.hpp)
   std::string autosave;          // the autosave file; empty: interact/autosave's default

@@ -42,10 +42,6 @@ ForceArrow force_arrow(const HapticSnapshot& snap, double metres_per_newton) {
 
 void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSnapshot& snap) {
   if (!ui.open) return;
-  if (!ImGui::Begin("Haptics", &ui.open)) {
-    ImGui::End();
-    return;
-  }
 
   // [SECTION] device
   ImGui::Text("Device: %s (%s)", snap.device_name, snap.device_connected ? "connected" : "DISCONNECTED");
@@ -98,7 +94,6 @@ void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSna
     std::snprintf(label, sizeof label, "%s %s##p%d", sp.name, sp.unit, i);
     if (ImGui::SliderScalar(label, ImGuiDataType_Double, &v, &sp.min, &sp.max, "%.3g")) loop.set_param(i, v);
   }
-  ImGui::End();
 }
 
 }  // namespace s4d

@@ -21,6 +21,7 @@ struct HapticsPanelState {
 // Draws the "Haptics" window. `snap` is this frame's loop.snapshot() (one read per frame, shared with
 // the renderer: the snapshot has a single reader). "Switch device" leaves the spec in
 // ui.requested_device for the caller, whose errors go to ui.error (the current device keeps running).
+// The panel's contents; the caller places it (a section of the window's left column).
 void draw_haptics_panel(HapticsPanelState& ui, HapticLoop& loop, const HapticSnapshot& snap);
 
 // The device choices in the panel's order, as --device spells them (replay takes the typed file).

@@ -8,17 +8,12 @@
 
 namespace s4d {
 
-void HapticsWindow::draw(Session& session) {
-  if (!ui_.open) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  // Under the Simulation panel, clear of the view's middle where the hand works.
-  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 560), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, std::max(120.0f, display.y - 570)), ImGuiCond_FirstUseEver);
+void HapticsWindow::draw(Session& session, Dock& dock) {
+  if (!ui_.open || !dock.begin(Side::kLeft, "Haptics", &ui_.open)) return;
   if (!session.loop() || !session.snapshot()) {
-    ImGui::Begin("Haptics", &ui_.open);
     ImGui::TextWrapped("The haptic loop runs while a scene with surfaces is simulated; open one "
                        "(File > Open) to touch it with the mouse or a device.");
-    ImGui::End();
+    dock.end();
     return;
   }
   // The backend list starts at the device in use.
@@ -31,6 +26,7 @@ void HapticsWindow::draw(Session& session) {
       if (in_use == names[i]) ui_.device_choice = i;
   }
   draw_haptics_panel(ui_, *session.loop(), *session.snapshot());
+  dock.end();
   if (!ui_.requested_device.empty()) {
     try {
       session.set_device(ui_.requested_device);

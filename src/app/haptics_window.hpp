@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "app/dock.hpp"
 #include "app/haptics_panel.hpp"
 
 namespace s4d {
@@ -13,8 +14,8 @@ class Session;
 class HapticsWindow {
  public:
   HapticsWindow() { ui_.open = false; }  // shown when the menu or --device asks for it
-  // Draws the panel when open; a no-op when closed.
-  void draw(Session& session);
+  // Draws the panel, a section of the left column, when open; a no-op when closed.
+  void draw(Session& session, Dock& dock);
   bool& open() { return ui_.open; }
 
  private:

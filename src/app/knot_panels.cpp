@@ -2,6 +2,9 @@
 // [SECTION] Unknot it by one crossing change   [SECTION] dump
 #include "app/knot_panels.hpp"
 
+#include "app/dock.hpp"
+#include "app/screen.hpp"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -88,6 +91,24 @@ KnotPanels::KnotPanels(unsigned exercise_seed)
 
 std::string KnotPanels::shown_name() const { return shown_ && shown_->info ? shown_->info->name : ""; }
 
+namespace {
+
+// A table knot comes at its own size (relaxed: tens of units); in a scene it takes the size of
+// what is there, as a sketched knot would have.
+void match_size(const Scene& scene, Curve<3>& c) {
+  if (scene.objects.empty()) return;
+  Scene alone;
+  alone.objects.push_back(SceneObject{});
+  alone.objects[0].shape = c;
+  const ViewFit own = fit_of(alone), there = fit_of(scene);
+  if (!(own.radius > 0) || !(there.radius > 0)) return;
+  const double k = there.radius / own.radius;
+  for (Polyline<3>& p : c.components)
+    for (Vec3& q : p.points) q = own.centre.head<3>() + k * (q - own.centre.head<3>());
+}
+
+}  // namespace
+
 bool KnotPanels::busy() const {
   const auto latest = worker_.latest();
   const bool naming = submitted_ > 0 && (!latest || latest->request < submitted_);
@@ -109,15 +130,43 @@ void KnotPanels::focus(GuiModel& model, const Frame<3>& view) {
   for (const SceneObject& o : model.scene().objects)
     if (std::find(focus_.begin(), focus_.end(), o.name) != focus_.end()) only.objects.push_back(o);
   focus_.clear();
-  if (only.objects.empty()) return;
-  const ViewFit f = fit_of(only);
-  model.fit = f;
-  // Smaller and higher than the whole view, so that the Knot panel below leaves it in sight.
-  model.fit.radius = 1.6 * f.radius;
-  model.fit.centre.head<3>() -= 0.45 * f.radius * view.matrix().col(1);
+  frame_on(model, only);
+}
+
+// An exercise begun from the menus has its own scene: this goes back to the one it left.
+void KnotPanels::leave_button(GuiModel& model) {
+  if (!model.exercise_return) return;
+  if (button("Leave the exercise")) {
+    model.leave_exercise = true;
+    same_open_ = unknot_open_ = false;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the scene you had before the exercise");
+}
+
+void KnotPanels::new_pair() {
+  if (pair_.valid()) return;
+  same_error_.clear();
+  pair_ = std::async(std::launch::async, [seed = rng_()] { return make_same_knot_exercise(seed); });
+}
+
+void KnotPanels::start_unknot(GuiModel& model) {
+  if (!unknot_open_ && !unknot_name_.empty() && object_named(model.scene(), kExerciseKnot) >= 0) {
+    unknot_open_ = true;  // back to the one under way
+  } else if (!unknot_make_.valid()) {
+    unknot_open_ = true;
+    unknot_make_ = std::async(std::launch::async, [seed = rng_()] {
+      const std::string name = pick_unknotting_exercise(seed);
+      return std::pair{name, make_table_knot(name)};
+    });
+  }
 }
 
 void KnotPanels::draw(GuiModel& model, const Frame<3>& view) {
+  if (std::exchange(model.open_same_knot, false)) {  // from the menus: a pair at once
+    same_open_ = true;
+    new_pair();
+  }
+  if (std::exchange(model.open_unknot, false)) start_unknot(model);
   focus(model, view);
   buttons_.clear();
   name_hidden_ = false;
@@ -135,10 +184,7 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
   const std::vector<int> curves = curve_objects(scene);
   if (curves.empty()) return;
   if (std::find(curves.begin(), curves.end(), selected_) == curves.end()) selected_ = curves.front();
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(350, display.y - 360), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(460, 350), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Knot");
+  if (!model.dock.begin(Side::kRight, "Knot")) return;
   if (model.touch_and_sound_only) {
     // The name and the codes would give the knot away: only what the hand and ear have found.
     name_hidden_ = true;
@@ -148,24 +194,14 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
     ImGui::SetWindowFontScale(1.5f);
     ImGui::TextWrapped("%s", code.empty() ? "(no crossing passed yet)" : code.c_str());
     ImGui::SetWindowFontScale(1.0f);
-    ImGui::End();
+    model.dock.end();
     return;
   }
   if (button("Knot from the table...")) table_open_ = true;
-  ImGui::SameLine();
+  same_line_if_fits("Are these the same knot?");
   if (button("Are these the same knot?")) same_open_ = true;
-  ImGui::SameLine();
-  if (button("Unknot it...")) {
-    if (!unknot_open_ && !unknot_name_.empty() && object_named(scene, kExerciseKnot) >= 0) {
-      unknot_open_ = true;  // back to the one under way
-    } else {
-      unknot_open_ = true;
-      unknot_make_ = std::async(std::launch::async, [seed = rng_()] {
-        const std::string name = pick_unknotting_exercise(seed);
-        return std::pair{name, make_table_knot(name)};
-      });
-    }
-  }
+  same_line_if_fits("Unknot it...");
+  if (button("Unknot it...")) start_unknot(model);
   if (ImGui::BeginCombo("curve", scene.objects[static_cast<std::size_t>(selected_)].name.c_str())) {
     for (int o : curves)
       if (ImGui::Selectable(scene.objects[static_cast<std::size_t>(o)].name.c_str(), o == selected_)) selected_ = o;
@@ -229,7 +265,7 @@ void KnotPanels::info_panel(GuiModel& model, const Frame<3>& view) {
     ImGui::TextWrapped("HOMFLY-PT: %s", k.homfly.c_str());
     ImGui::Text("determinant %lld   (%.1f ms)", static_cast<long long>(k.determinant), k.milliseconds);
   }
-  ImGui::End();
+  model.dock.end();
 }
 
 // The diagram toolbar (as KnotFolio's): each edit one undoable step (also: shadow4d knot mirror,
@@ -240,16 +276,16 @@ void KnotPanels::toolbar(GuiModel& model) {
   component_ = std::clamp(component_, 1, n);
   const int o = selected_, k = component_ - 1;
   if (button("Mirror")) model.status = edit_curve_object(model.session, o, "mirror", mirrored_curve);
-  ImGui::SameLine();
+  same_line_if_fits("Reverse component");
   if (button("Reverse component"))
     model.status = edit_curve_object(model.session, o, "reverse component " + std::to_string(component_) + " of",
                                      [k](const Curve<3>& x) { return with_component_reversed(x, k); });
   if (n > 1) {
-    ImGui::SameLine();
+    same_line_if_fits("Delete component");
     if (button("Delete component"))
       model.status = edit_curve_object(model.session, o, "delete component " + std::to_string(component_) + " of",
                                        [k](const Curve<3>& x) { return with_component_deleted(x, k); });
-    ImGui::SameLine();
+    same_line_if_fits(90 + ImGui::CalcTextSize("component").x);
     ImGui::SetNextItemWidth(90);
     ImGui::InputInt("component", &component_);
     component_ = std::clamp(component_, 1, n);
@@ -263,6 +299,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
       SceneObject o;
       o.name = making_ + (mirror_ ? " mirror" : "");
       Curve<3> c = made_.get();
+      match_size(model.scene(), c);
       place_beside(all_curves(model.scene()), c);  // next to what is there, not on top of it
       o.shape = std::move(c);
       model.session.record("create " + o.name);
@@ -271,20 +308,22 @@ void KnotPanels::table_dialog(GuiModel& model) {
       model.scene().view.intersections = true;
       model.session.rebuild();
       model.status = "made " + making_ + " from the table";
+      model.want_frame = true;
       table_error_.clear();
     } catch (const std::exception& e) {
       table_error_ = e.what();
     }
     making_.clear();
   }
+  const bool appearing = table_open_ && !table_was_open_;
+  table_was_open_ = table_open_;
   if (!table_open_) return;
-  ImGui::SetNextWindowSize(ImVec2(360, 420), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Knot from the table", &table_open_);
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // type the name at once
+  if (!model.dock.begin(Side::kRight, "Knot from the table", &table_open_)) return;
+  if (appearing) ImGui::SetKeyboardFocusHere();  // type the name at once
   ImGui::InputText("name", filter_, sizeof filter_);
   ImGui::SameLine();
   ImGui::Checkbox("mirror", &mirror_);
-  ImGui::BeginChild("names", ImVec2(0, -60), true);
+  ImGui::BeginChild("names", ImVec2(0, 12 * ImGui::GetTextLineHeightWithSpacing()), true);
   int shown = 0;
   const std::string filter = lower_case(filter_);
   for (const TableName& n : names_) {
@@ -310,7 +349,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
   ImGui::SameLine();
   ImGui::TextDisabled("(also: shadow4d knot make NAME --out K.curve)");
   if (!table_error_.empty()) ImGui::TextColored(kBad, "%s", table_error_.c_str());
-  ImGui::End();
+  model.dock.end();
 }
 
 // [SECTION] Are these the same knot?
@@ -364,21 +403,16 @@ void KnotPanels::same_dialog(GuiModel& model) {
   }
   if (!same_open_) return;
   const Scene& scene = model.scene();
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 300), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(340, 1e6f));
-  ImGui::Begin("Are these the same knot?", &same_open_, ImGuiWindowFlags_AlwaysAutoResize);
-  if (button(pair_.valid() ? "making a pair..." : "New pair from the table") && !pair_.valid()) {
-    same_error_.clear();
-    pair_ = std::async(std::launch::async, [seed = rng_()] { return make_same_knot_exercise(seed); });
-  }
+  if (!model.dock.begin(Side::kRight, "Are these the same knot?", &same_open_)) return;
+  leave_button(model);
+  if (button(pair_.valid() ? "making a pair..." : "New pair from the table")) new_pair();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("two knots from the table side by side, the second turned: mirror images, redrawings,\n"
                       "knots that share a polynomial (also: shadow4d knot compare A B --answer same)");
   const std::vector<int> curves = curve_objects(scene);
   if (curves.size() < 2) {
     ImGui::TextWrapped("Or put two curves in the scene (from the table, files or sketches) to compare them.");
-    ImGui::End();
+    model.dock.end();
     return;
   }
   if (std::find(curves.begin(), curves.end(), selected_) == curves.end()) selected_ = curves.front();
@@ -424,7 +458,7 @@ void KnotPanels::same_dialog(GuiModel& model) {
   if (pair_names_ && pair_answered_ && (name_a == kPairA || name_a == kPairB))
     ImGui::TextDisabled("knot A was %s, knot B %s (turned)", pair_names_->a.c_str(), pair_names_->b.c_str());
   if (!same_error_.empty()) ImGui::TextColored(kBad, "%s", same_error_.c_str());
-  ImGui::End();
+  model.dock.end();
 }
 
 // [SECTION] Unknot it by one crossing change
@@ -488,10 +522,8 @@ void KnotPanels::unknot_dialog(GuiModel& model, const Frame<3>& view) {
     }
   }
   if (!unknot_open_) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 300), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(340, 0), ImVec2(340, 1e6f));
-  ImGui::Begin("Unknot it by one crossing change", &unknot_open_, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!model.dock.begin(Side::kRight, "Unknot it by one crossing change", &unknot_open_)) return;
+  leave_button(model);
   if (button(unknot_make_.valid() ? "making a knot..." : "New knot") && !unknot_make_.valid())
     unknot_make_ = std::async(std::launch::async, [seed = rng_()] {
       const std::string name = pick_unknotting_exercise(seed);
@@ -515,10 +547,10 @@ void KnotPanels::unknot_dialog(GuiModel& model, const Frame<3>& view) {
   } else {
     ImGui::TextWrapped("%s", exercise_message_.c_str());
   }
-  ImGui::End();
+  model.dock.end();
 }
 
-void KnotPanels::overlay(GuiModel& model, const Camera& camera, const Vec2& window) {
+void KnotPanels::overlay(GuiModel& model, const Camera& camera, const Rect& view) {
   labels_.clear();
   const int o = object_named(model.scene(), kExerciseKnot);
   // Kept after the user's change (dimmer), so that the crossings the verdict names can be found.
@@ -530,16 +562,15 @@ void KnotPanels::overlay(GuiModel& model, const Camera& camera, const Vec2& wind
     if (c.object != o || camera.view_depth(c.over) <= camera.near_plane) continue;
     const int label = nearest_crossing(r, r.frame.to_view(c.over).head<2>());
     if (label <= 0) continue;
-    const Vec2 n = camera.ndc(c.over);
-    const ImVec2 at(static_cast<float>((n.x() + 1) / 2 * window.x()) + 9,
-                    static_cast<float>((1 - n.y()) / 2 * window.y()) - 9);
+    ImVec2 px;
+    if (!to_screen(camera, c.over, view, px)) continue;
+    const ImVec2 at(px.x + 9, px.y - 9);
     const std::string text = std::to_string(label);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     dl->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2),
                       IM_COL32(20, 20, 30, 210), 4.0f);
     dl->AddText(at, changed_at_ ? IM_COL32(170, 170, 170, 255) : IM_COL32(255, 230, 120, 255), text.c_str());
-    labels_.push_back({label, static_cast<float>((n.x() + 1) / 2 * window.x()),
-                       static_cast<float>((1 - n.y()) / 2 * window.y())});
+    labels_.push_back({label, px.x, px.y});
   }
 }
 

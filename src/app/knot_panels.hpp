@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/camera.hpp"
+#include "app/layout.hpp"
 #include "knots/knot_exercises.hpp"
 #include "knots/knot_info.hpp"
 #include "knots/knot_table.hpp"
@@ -32,7 +33,7 @@ class KnotPanels {
   // Draws the Knot panel when the scene has curves, and the dialogs that are open.
   void draw(GuiModel& model, const Frame<3>& view);
   // The unknotting exercise's crossing numbers at their crossings in the view (under the panels).
-  void overlay(GuiModel& model, const Camera& camera, const Vec2& window);
+  void overlay(GuiModel& model, const Camera& camera, const Rect& view);
   void open_table() { table_open_ = true; }
   // The window's right click on crossing `over_point` (shadow space) of `object` before it is
   // changed: in the unknotting exercise, the verdict on that crossing. True when it was one.
@@ -52,12 +53,16 @@ class KnotPanels {
   void table_dialog(GuiModel& model);
   void same_dialog(GuiModel& model);
   void unknot_dialog(GuiModel& model, const Frame<3>& view);
+  void start_unknot(GuiModel& model);
+  void leave_button(GuiModel& model);
+  void new_pair();  // a new same-knot pair from the table, made off the UI thread  // a new unknotting exercise, or back to the one under way
   bool button(const char* label);  // ImGui::Button, its rectangle kept for dump()
   void add_pair(GuiModel& model, SameKnotExercise pair);
   void add_exercise_knot(GuiModel& model, Curve<3> curve);
   void focus(GuiModel& model, const Frame<3>& view);  // frames the view on the objects of focus_ (a frame after they came)
 
   std::mt19937 rng_;
+  bool table_was_open_ = false;  // the table's name field takes the keys when it opens
   std::map<std::string, std::array<float, 4>> buttons_;  // drawn this frame
   bool name_hidden_ = false;  // the Knot panel hides the name (touch and sound only, an exercise)
   KnotInfoWorker worker_;

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/object_file.hpp"
+#include "io/recent_files.hpp"
 #include "render/diagram_export.hpp"
 
 namespace s4d {
@@ -47,6 +48,14 @@ ViewFit fit_of(const Scene& scene) {
   return f;
 }
 
+void frame_on(GuiModel& model, const Scene& only) {
+  if (only.objects.empty()) return;
+  model.fit = fit_of(only);
+  model.view.unzoom();
+}
+
+void frame_all(GuiModel& model) { frame_on(model, model.scene()); }
+
 double probe_depth_fraction(const Scene& scene, const ViewFit& fit, const Vec3& toward_eye, bool on_curve,
                             double probe_w) {
   if (!(fit.radius > 0) || !std::isfinite(probe_w)) return 0.5;
@@ -54,13 +63,26 @@ double probe_depth_fraction(const Scene& scene, const ViewFit& fit, const Vec3& 
   return std::clamp(0.5 + 0.5 * (probe_w - centre) / fit.radius, 0.0, 1.0);
 }
 
+namespace {
+
+// A file opened or saved goes to the start page's recent list (beside the autosave).
+void remember(const GuiModel& model, const std::string& spec) {
+  std::error_code ec;
+  if (model.autosave_path.empty() || !std::filesystem::is_regular_file(spec, ec)) return;
+  RecentFiles(std::filesystem::path(model.autosave_path).parent_path() / "recent.txt").add(spec);
+}
+
+}  // namespace
+
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
     if (spec.size() > 4 && spec.ends_with(".s4d")) {
       open_session(model, read_session(spec), spec);
+      remember(model, spec);
       return;
     }
     open(model, load_document(spec));
+    remember(model, spec);
   } catch (const std::exception& e) {
     model.error = e.what();
   }
@@ -80,6 +102,7 @@ void Panels::undo_or_redo(GuiModel& model, bool redo) {
 
 void Panels::open_session(GuiModel& model, const SessionFile& saved, const std::string& path) {
   model.session.open_saved(saved, path, model.session_options);
+  model.start_page = false;
   model.view.reset(model.scene());
   model.view.set_base_frame(saved.view.base_frame);
   model.view.set(saved.view.angles, saved.view.trackball, saved.view.zoom);
@@ -107,13 +130,12 @@ void Panels::open(GuiModel& model, Document doc) {
   SessionOptions options = model.session_options;
   options.start_playing = !scenario;  // a scenario opens paused in its start state
   model.session.open(std::move(doc), options);
+  model.start_page = false;
   model.view.reset(model.scene());
   if (!scene_file && !model.scene().objects.empty() && ambient_dim(model.scene().objects[0].shape) == 4)
     model.view.turn_to_generic_view();
   model.fit = fit_of(model.scene());
-  model.status = "opened " + spec;
-  if (scenario) model.status += ": " + model.session.scenario()->instruction;
-  else if (!model.scene().instruction.empty()) model.status += ": " + model.scene().instruction;
+  model.status = "opened " + spec;  // its instruction is in the band above the view
   if (!model.session.physics_error().empty())
     model.status += " (not simulated: " + model.session.physics_error() + ")";
   if (!model.session.device_error().empty()) model.error = model.session.device_error();
@@ -141,14 +163,39 @@ Panels::Panels()
       stroke_browser_("Save last sketch stroke", {".txt"}, true),
       diagram_browser_("Export the crossing diagram (.svg, or .tex for TikZ)", {".svg", ".tex"}, true) {}
 
+// An exercise asked for from the menus or the start page has a scene of its own; the scene it
+// left is kept whole (as a session) and comes back when the user leaves the exercise.
+void Panels::exercise_scene(GuiModel& model) {
+  if ((model.open_same_knot || model.open_unknot) && !model.exercise_return) {
+    model.exercise_return = model.session.save_state();
+    Document d;
+    d.spec = "an exercise";
+    open(model, std::move(d));
+  }
+  if (std::exchange(model.leave_exercise, false) && model.exercise_return) {
+    const SessionFile back = std::move(*model.exercise_return);
+    model.exercise_return.reset();
+    open_session(model, back, "the scene before the exercise");
+    model.status = "left the exercise: back to the scene before it";
+  }
+}
+
 void Panels::draw(GuiModel& model, float fps) {
   menu_bar(model);
+  exercise_scene(model);
+  if (std::exchange(model.open_file_dialog, false)) open_browser_.open(S4D_SCENES_DIR);
+  if (model.start_page) {  // the page is drawn by the window; only the menus and dialogs here
+    dialogs(model);
+    return;
+  }
   view_panel(model, fps);
   scene_panel(model);
   simulation_panel(model);
   scenario_banner(model);
   ribbon_panel(model);
   history_panel(model);
+  messages_panel(model);
+  keys_panel(model);
   generator_dialog(model);
   dialogs(model);
 }
@@ -163,6 +210,8 @@ void Panels::menu_bar(GuiModel& model) {
       open(model, std::move(d));
       model.status = "empty scene: Create adds objects, or sketch a knot";
     }
+    if (ImGui::MenuItem("Start page", nullptr, model.start_page)) model.start_page = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's examples, the exercises, recent files, the keys");
     if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
     if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(S4D_SCENARIOS_DIR);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
@@ -192,48 +241,36 @@ void Panels::menu_bar(GuiModel& model) {
     ImGui::MenuItem("History", nullptr, &model.show_history);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Tools")) {
-    if (ImGui::MenuItem("Touch (grab and pull)", "T", model.tool == ToolChoice::kTouch)) model.choose(ToolChoice::kTouch);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("left-drag a surface, or a knot's strand: a rubber band pulls the point under the cursor\n"
-                        "(Alt: along the shadow ray, w or a knot's depth; a knot never passes through itself);\n"
-                        "Tab: the next sheet under the cursor; P or right click: pin / unpin;\n"
-                        "the wheel while holding: the hand in depth. On empty space the drag turns the view.");
-    if (ImGui::MenuItem("Explore (probe and sound)", "E", model.tool == ToolChoice::kExplore))
-      model.choose(ToolChoice::kExplore);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("press on a surface of R^4 and move: the probe keeps to its sheet through the shadow's\n"
-                        "self-intersections, the hand feels the navigation spring, and each curve passed\n"
-                        "sounds: high where the probe's sheet is above in w, low where it is below\n"
-                        "(also: shadow4d explore SCENE --through ...)");
+  if (ImGui::BeginMenu("View")) {
+    if (ImGui::MenuItem("Frame all", "F")) model.want_frame = true;
+    if (ImGui::MenuItem("Reset the 4D rotation")) {
+      model.session.record("turn in 4D");
+      model.view.plane_angles().fill(0.0f);
+    }
+    ImGui::Separator();
+    ImGui::MenuItem("Left panels", nullptr, &model.left_open);
+    ImGui::MenuItem("Right panels", nullptr, &model.right_open);
+    ImGui::MenuItem("Messages", nullptr, &model.show_messages);
+    ImGui::SetNextItemWidth(120 * model.ui_scale);
+    ImGui::SliderFloat("UI scale", &model.ui_scale_setting, 0.5f, 3.0f, "%.2f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("times the monitor's own scale (also: shadow4d --ui-scale S)");
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Create")) {
-    bool sketching = model.sketching();
-    if (ImGui::MenuItem("Sketch a knot", "K", &sketching)) model.choose(sketching ? ToolChoice::kSketchKnot : ToolChoice::kTouch);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("draw a closed curve with the left button in the plane facing you;\n"
-                        "where it crosses what is drawn it passes over, or under with shift held.\n"
-                        "It becomes a knot of R^3, named live in the Scene panel.\n"
-                        "(also: shadow4d knot sketch STROKE --knot --out KNOT)");
+  for (const char* menu : {"Tools", "Create"}) {
+    if (!ImGui::BeginMenu(menu)) continue;
+    for (const ToolEntry& e : tool_entries()) {
+      if (std::string_view(e.menu) != menu) continue;
+      if (ImGui::MenuItem(e.label, e.key_name, model.tool == e.id)) model.choose(model.tool == e.id ? ToolChoice::kTouch : e.id);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
+    }
+    if (std::string_view(menu) == "Tools") {
+      ImGui::EndMenu();
+      continue;
+    }
     if (ImGui::MenuItem("Knot from the table...")) model.open_knot_table = true;
-    if (ImGui::MenuItem("Exercise: untangle the unknot (Fig. 15)"))
-      open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("a tangled curve that is the unknot: show it by dragging strands (Alt: along the depth)\n"
-                        "until its picture has no crossing; a drag never changes the knot\n"
-                        "(also: shadow4d scenes/fig15-tangled-unknot.json)");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("3_1 ... 10_165, 11n_34, 12a_803, torus knots T(p,q), links; a relaxed 3D curve of it\n"
                         "(also: shadow4d knot make NAME --out K.curve)");
-    bool ribbon = model.tool == ToolChoice::kSketchRibbon;
-    if (ImGui::MenuItem("Sketch a ribbon", "R", &ribbon)) model.choose(ribbon ? ToolChoice::kSketchRibbon : ToolChoice::kTouch);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("draw a ribbon's centre line with the left button on the plane facing you (wheel: its\n"
-                        "depth); where it passes another surface's shadow it goes above in w, or below with\n"
-                        "shift held. It is smoothed in w keeping every choice, checked to be embedded and\n"
-                        "simulated: above then below through a sphere links them.\n"
-                        "(also: shadow4d sketch-ribbon SCENE STROKE --out OUT.json)");
     ImGui::Separator();
     for (const auto& g : generator_catalogue()) {
       const std::string label = g.name + (g.surface ? "  (surface, R^" : "  (curve, R^") +
@@ -248,12 +285,68 @@ void Panels::menu_bar(GuiModel& model) {
     }
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Exercises")) {
+    if (ImGui::MenuItem("Untangle the unknot (Fig. 15)"))
+      open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("a tangled curve that is the unknot: show it by dragging strands (Alt: along the depth)\n"
+                        "until its picture has no crossing; a drag never changes the knot\n"
+                        "(also: shadow4d scenes/fig15-tangled-unknot.json)");
+    if (ImGui::MenuItem("Are these the same knot?")) model.open_same_knot = true;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("two knots from the table side by side, the second turned: say whether they are the same\n"
+                        "(also: shadow4d knot exercise same)");
+    if (ImGui::MenuItem("Unknot it by one crossing change")) model.open_unknot = true;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("a knot of unknotting number one: right-click the crossing that unknots it\n"
+                        "(also: shadow4d knot exercise unknot)");
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Haptics")) {
     if (ImGui::MenuItem("Haptics panel (device, loop, forces)")) model.open_haptics = true;
     ImGui::EndMenu();
   }
-  ImGui::TextDisabled("|  %s", model.status.c_str());
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Keys", "? F1", &model.show_keys)) {}
+    ImGui::EndMenu();
+  }
   ImGui::EndMainMenuBar();
+}
+
+// Every message of the status line, whole and newest last (the status line shows one, cut to fit).
+void Panels::messages_panel(GuiModel& model) {
+  if (!model.show_messages || !model.dock.begin(Side::kLeft, "Messages", &model.show_messages)) return;
+  if (ImGui::SmallButton("Clear")) model.messages.clear();
+  ImGui::BeginChild("log", ImVec2(0, 10 * ImGui::GetTextLineHeightWithSpacing()), true);
+  ImGui::PushTextWrapPos(0);
+  for (const std::string& m : model.messages) ImGui::TextUnformatted(m.c_str());
+  ImGui::PopTextWrapPos();
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);  // follow the newest
+  ImGui::EndChild();
+  model.dock.end();
+}
+
+// Help > Keys, ? and F1: the window's keys, then the active tool's.
+void Panels::keys_panel(GuiModel& model) {
+  if (!model.show_keys || !model.dock.begin(Side::kRight, "Keys", &model.show_keys)) return;
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+    for (const KeyHelp& k : window_keys()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.keys);
+      ImGui::TableNextColumn();
+      ImGui::PushTextWrapPos(0);
+      ImGui::TextUnformatted(k.what);
+      ImGui::PopTextWrapPos();
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Separator();
+  ImGui::Text("%s (the active tool):", model.active_tool()->name());
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextUnformatted(model.active_tool()->help().c_str());
+  ImGui::PopTextWrapPos();
+  model.dock.end();
 }
 
 // [SECTION] Dialogs (open, save, screenshot, errors)
@@ -265,6 +358,7 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".s4d") path += ".s4d";
       write_session(model.session.save_state(), path);
       model.status = "saved the session " + path.string();
+      remember(model, path.string());
     } catch (const std::exception& e) {
       model.error = e.what();
     }

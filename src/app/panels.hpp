@@ -8,9 +8,12 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
+#include "app/dock.hpp"
 #include "app/file_browser.hpp"
 #include "app/knot_names.hpp"
+#include "app/tool_registry.hpp"
 #include "app/view_state.hpp"
 #include "audio/audio_player.hpp"
 #include "interact/tools/explore_tool.hpp"
@@ -48,14 +51,31 @@ struct GuiModel {
   ViewFit fit;
   std::string status;          // last message for the status line
   std::string error;           // shown until dismissed
+  std::vector<std::string> messages;  // every status message, whole (the Messages panel)
+  // [layout]
+  Layout layout;               // this frame's (compute_layout)
+  Dock dock;
+  float ui_scale = 1;          // the monitor's content scale times ui_scale_setting
+  float ui_scale_setting = 1;  // View > UI scale
+  bool left_open = true, right_open = true;  // the panel columns (View > Panels)
   // [requests]
   bool quit = false;
   bool want_screenshot = false;
   std::string screenshot_path = "shadow4d-screenshot.png";
   bool open_haptics = false;   // show the haptics panel
   bool show_history = false;   // Edit > History
+  bool show_messages = false;  // View > Messages
+  bool want_frame = false;     // F, View > Frame all: fit every object in the view
   bool touch_and_sound_only = false;  // the picture hidden: the knot explored by feel and ear (H)
   bool open_knot_table = false;  // Create > Knot from the table
+  bool open_same_knot = false;   // Exercises > Are these the same knot?
+  bool open_unknot = false;      // Exercises > Unknot it by one crossing change
+  bool show_keys = false;        // Help > Keys, ? and F1
+  bool start_page = false;       // the start page in the view's place (no file given; File > Start page)
+  std::vector<std::pair<std::string, Rect>> start_cards;  // its cards and buttons, drawn this frame
+  bool open_file_dialog = false; // File > Open, asked from elsewhere (the start page)
+  std::optional<SessionFile> exercise_return;  // the scene an exercise left, to go back to
+  bool leave_exercise = false;   // the exercise's "Leave" button
   std::string knot_panel_name;   // what the Knot panel names the selected curve (for dumps)
   std::set<std::string> hidden_knot_names;  // objects whose knot name is an exercise's answer
   bool depth_tone = false;       // while exploring, a tone whose pitch follows the probe's depth
@@ -77,14 +97,7 @@ struct GuiModel {
 
   Scene& scene() { return session.scene(); }
   // The tool the mouse drives now.
-  Tool* active_tool() {
-    switch (tool) {
-      case ToolChoice::kExplore: return &explore;
-      case ToolChoice::kSketchRibbon: return &ribbon;
-      case ToolChoice::kSketchKnot: return &knot;
-      default: return &grab;
-    }
-  }
+  Tool* active_tool() { return &tool_entry(tool).get(*this); }
   void choose(ToolChoice t) {
     if (tool == ToolChoice::kSketchKnot && t != tool) knot.leave(session);
     tool = t;
@@ -116,12 +129,15 @@ class Panels {
 
  private:
   void menu_bar(GuiModel& model);
+  void exercise_scene(GuiModel& model);
   void view_panel(GuiModel& model, float fps);
   void scene_panel(GuiModel& model);
   void simulation_panel(GuiModel& model);
   void scenario_banner(GuiModel& model);
   void ribbon_panel(GuiModel& model);
   void history_panel(GuiModel& model);
+  void messages_panel(GuiModel& model);
+  void keys_panel(GuiModel& model);
   void restore_dialog(GuiModel& model);
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
@@ -144,5 +160,15 @@ class Panels {
 // The document's scene with the live shapes as they are now, objects moved by the simulation
 // turned into edited geometry (saved as meshes beside the scene file), the view's frame written in.
 Scene scene_to_save(GuiModel& model);
+
+// F and View > Frame all: every object in the view (the ball of their points, zoom 1, no pan);
+// frame_on: the objects of `only` (a knot from the table, an exercise's knots).
+void frame_all(GuiModel& model);
+void frame_on(GuiModel& model, const Scene& only);
+
+// The scenario's name and instruction, or the scene's, for the band above the view; and how many
+// lines it takes in a band `width` pixels wide (with the verdict's line), for the layout.
+std::string instruction_text(GuiModel& model);
+int instruction_lines(GuiModel& model, float width);
 
 }  // namespace s4d

@@ -26,14 +26,36 @@ std::string seconds(double s) {
   return b;
 }
 
+// Pins each simulated object's highest vertex against gravity (one undoable step): what holds a
+// cloth or a chain up when gravity is turned on with nothing pinned.
+void pin_the_top(Session& session, const Vec4& gravity) {
+  const HapticSnapshot* snap = session.snapshot();
+  if (!snap || snap->point_dimension < 3 || !(gravity.norm() > 0)) return;
+  const int dim = snap->point_dimension;
+  const int nv = static_cast<int>(snap->points.size()) / dim;
+  std::vector<int> starts;
+  for (int o = 0; o < static_cast<int>(session.scene().objects.size()); ++o)
+    if (const int f = session.first_vertex(o); f >= 0 && f < nv) starts.push_back(f);
+  std::sort(starts.begin(), starts.end());
+  starts.push_back(nv);
+  session.record("pin the top");
+  for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+    int top = -1;
+    double best = -1e300;
+    for (int v = starts[k]; v < starts[k + 1]; ++v) {
+      double up = 0;
+      for (int c = 0; c < std::min(dim, 4); ++c) up -= gravity[c] * snap->points[static_cast<std::size_t>(v * dim + c)];
+      if (up > best) best = up, top = v;
+    }
+    if (top >= 0) session.send(live::Pin{top, live::PinAction::kPin});
+  }
+}
+
 }  // namespace
 
 // [SECTION] Simulation panel
 void Panels::simulation_panel(GuiModel& model) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 350, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(340, 520), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Simulation");
+  if (!model.dock.begin(Side::kLeft, "Simulation")) return;
   Session& session = model.session;
   if (!session.simulating()) {
     if (!session.physics_error().empty()) {
@@ -43,7 +65,7 @@ void Panels::simulation_panel(GuiModel& model) {
     } else {
       ImGui::TextWrapped("nothing to simulate: sketch a knot (K), or open or create an object");
     }
-    ImGui::End();
+    model.dock.end();
     return;
   }
   const HapticSnapshot* snap = session.snapshot();
@@ -100,8 +122,10 @@ void Panels::simulation_panel(GuiModel& model) {
   static Vec4 gravity_saved(0, -9.81, 0, 0);
   if (ImGui::Checkbox("gravity", &gravity_on)) {
     record_setting();
-    if (gravity_on) p.gravity = gravity_saved;
-    else {
+    if (gravity_on) {
+      p.gravity = gravity_saved;
+      if (st.pinned == 0) model.status = "gravity on with nothing pinned: everything falls (Simulation > Pin the top holds it up)";
+    } else {
       gravity_saved = p.gravity;
       p.gravity.setZero();
     }
@@ -112,6 +136,16 @@ void Panels::simulation_panel(GuiModel& model) {
                   static_cast<float>(p.gravity[3])};
     if (ImGui::DragFloat4("g (x y z w)", g, 0.05f, -50.0f, 50.0f, "%.2f")) p.gravity = Vec4(g[0], g[1], g[2], g[3]);
     edited();
+    if (st.pinned == 0 && st.held_vertex < 0) {  // everything would fall out of view without a word
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.7f, 0.3f, 1));
+      ImGui::TextWrapped("Nothing is pinned: with gravity everything falls out of view.");
+      ImGui::PopStyleColor();
+      if (ImGui::SmallButton("Pin the top")) {
+        pin_the_top(session, p.gravity);
+        model.status = "pinned the top of each object (P or a right click unpins; clear pins frees all)";
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("pins each object's highest vertex, as a hand would hold it up");
+    }
   }
   auto slider = [&](const char* label, double& value, double lo, double hi, const char* format, bool log) {
     float f = static_cast<float>(value);
@@ -209,44 +243,58 @@ void Panels::simulation_panel(GuiModel& model) {
   } else {
     ImGui::TextDisabled("checking...");
   }
-  ImGui::End();
+  model.dock.end();
 }
 
 // [SECTION] Scenario banner
-void Panels::scenario_banner(GuiModel& model) {
+std::string instruction_text(GuiModel& model) {
   const auto& sc = model.session.scenario();
-  const std::string& what_to_do = model.scene().instruction;
-  if (!sc && what_to_do.empty()) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, 30), ImGuiCond_FirstUseEver, ImVec2(0.5f, 0));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 0), ImVec2(std::max(200.0f, std::min(560.0f, display.x - 700)), 400));
-  ImGui::Begin(sc ? "Scenario" : "What to do", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + std::max(200.0f, std::min(540.0f, display.x - 720)));
-  if (!sc) {  // a scene that says what to do with it by hand
-    ImGui::TextWrapped("%s", what_to_do.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::End();
-    return;
-  }
-  ImGui::TextWrapped("%s: %s", sc->name.c_str(), sc->instruction.c_str());
-  ImGui::TextDisabled("Space plays, Play script shows it done; shadow4d run %s gives the same verdict",
-                      sc->file.filename().string().c_str());
-  const MonitorResult c = model.session.checks();
-  if (c.verdict) {
-    const bool pass = c.verdict->pass && c.true_intersections == 0;
-    ImGui::TextColored(pass ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.75f, 0.35f, 1), "%s", pass ? "PASS" : "not yet");
-    ImGui::SameLine();
-    ImGui::TextWrapped("%s", c.verdict->detail.c_str());
-  }
+  if (sc) return sc->name + ": " + sc->instruction;
+  return model.scene().instruction;
+}
+
+int instruction_lines(GuiModel& model, float width) {
+  const std::string text = instruction_text(model);
+  if (text.empty()) return 0;
+  const float inner = std::max(width - 2 * ImGui::GetStyle().WindowPadding.x, 50.0f);
+  const float h = ImGui::CalcTextSize(text.c_str(), nullptr, false, inner).y;
+  const int lines = static_cast<int>(std::ceil(h / ImGui::GetTextLineHeight() - 0.01f));
+  return std::max(lines, 1) + (model.session.scenario() ? 1 : 0);  // and the verdict's line
+}
+
+// The instruction in the band above the view, with the live verdict: never over what it says to touch.
+void Panels::scenario_banner(GuiModel& model) {
+  const Rect& band = model.layout.band;
+  const auto& sc = model.session.scenario();
+  if (band.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(band.x, band.y));
+  ImGui::SetNextWindowSize(ImVec2(band.w, band.h));
+  ImGui::Begin("##instruction", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                             ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextUnformatted(instruction_text(model).c_str());
   ImGui::PopTextWrapPos();
+  if (sc) {
+    const MonitorResult c = model.session.checks();
+    if (c.verdict) {
+      const bool pass = c.verdict->pass && c.true_intersections == 0;
+      ImGui::TextColored(pass ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.75f, 0.35f, 1), "%s", pass ? "PASS" : "not yet");
+      ImGui::SameLine();
+      ImGui::TextUnformatted(c.verdict->detail.c_str());
+    } else {
+      ImGui::TextDisabled("checking...");
+    }
+    if (ImGui::IsWindowHovered())
+      ImGui::SetTooltip("Space plays; Simulation > Play script shows it done;\nshadow4d run %s gives the same verdict",
+                        sc->file.filename().string().c_str());
+  }
   ImGui::End();
 }
 
 // The ribbon tool's options, while it is the tool.
 void Panels::ribbon_panel(GuiModel& model) {
   if (model.tool != ToolChoice::kSketchRibbon) return;
-  ImGui::SetNextWindowPos(ImVec2(350, ImGui::GetIO().DisplaySize.y - 150), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Ribbon", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!model.dock.begin(Side::kRight, "Ribbon")) return;
   RibbonSketchOptions& o = model.ribbon.options;
   RibbonSketchOptions before = o;
   const auto put_back = [&] { std::swap(o, before); };
@@ -263,14 +311,13 @@ void Panels::ribbon_panel(GuiModel& model) {
       ImGui::BulletText("%s %s (gap %.3f)", p.below ? "below" : "above",
                         p.surface < 0 ? "itself" : "another surface", p.gap);
   }
-  ImGui::End();
+  model.dock.end();
 }
 
 // Every step done (oldest first) and undone (greyed, next to redo first); the buttons walk it.
 void Panels::history_panel(GuiModel& model) {
   if (!model.show_history) return;
-  ImGui::SetNextWindowSize(ImVec2(300, 300), ImGuiCond_FirstUseEver);
-  ImGui::Begin("History", &model.show_history);
+  if (!model.dock.begin(Side::kLeft, "History", &model.show_history)) return;
   Session& s = model.session;
   const History& h = s.history();
   if (ImGui::Button("Undo")) undo_or_redo(model, false);
@@ -285,7 +332,7 @@ void Panels::history_panel(GuiModel& model) {
   for (const std::string& l : h.undone_labels()) ImGui::TextDisabled("    %s (undone)", l.c_str());
   if (done.empty() && !h.can_redo()) ImGui::TextDisabled("nothing done yet");
   ImGui::TextDisabled("the last %zu steps or %zu MB are kept", History::kMaxSteps, History::kMaxBytes >> 20);
-  ImGui::End();
+  model.dock.end();
 }
 
 // After a crash or a kill: the autosave the last run left, taken up or set aside.

@@ -46,9 +46,7 @@ void legend(ColourMap map, const Scene& scene) {
 
 // [SECTION] View panel
 void Panels::view_panel(GuiModel& model, float fps) {
-  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 560), ImGuiCond_FirstUseEver);
-  ImGui::Begin("View");
+  if (!model.dock.begin(Side::kLeft, "View", nullptr, false)) return;
   ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
   ImGui::Separator();
   ImGui::TextUnformatted("4D rotation (degrees)");
@@ -148,14 +146,12 @@ void Panels::view_panel(GuiModel& model, float fps) {
                         "high where it is near the eye (a knot) or near in w (a surface), low where far");
     ImGui::TextDisabled("%s", model.audio->status().c_str());
   }
-  ImGui::End();
+  model.dock.end();
 }
 
 // [SECTION] Scene panel
 void Panels::scene_panel(GuiModel& model) {
-  ImGui::SetNextWindowPos(ImVec2(10, 600), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 190), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Scene");
+  if (!model.dock.begin(Side::kLeft, "Scene")) return;
   Scene& scene = model.scene();
   if (scene.objects.empty()) ImGui::TextDisabled("empty: File > Open or Create");
   int remove = -1;
@@ -178,7 +174,7 @@ void Panels::scene_panel(GuiModel& model) {
     scene.objects.erase(scene.objects.begin() + remove);
     model.session.objects_changed();  // the other bodies keep their motion and pins
   }
-  ImGui::End();
+  model.dock.end();
 }
 
 // A curve's knot: named live when it is small (KnotNames), on request when it is not.

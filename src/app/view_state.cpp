@@ -21,6 +21,17 @@ void ViewState::reset(const Scene& scene) {
   angles_.fill(0.0f);
   trackball_ = scene.view.trackball;
   zoom_ = scene.view.zoom;
+  pan_ = Vec2::Zero();
+}
+
+void ViewState::pan_by(double dx, double dy) {
+  if (!std::isfinite(dx) || !std::isfinite(dy)) return;
+  pan_ = (pan_ + Vec2(dx, dy)).cwiseMax(-20.0).cwiseMin(20.0);  // never lost far from the objects
+}
+
+Vec3 ViewState::pan_offset(double radius) const {
+  const Eigen::Quaterniond q = trackball_.normalized();
+  return -radius * (pan_.x() * (q * Vec3::UnitX()) + pan_.y() * (q * Vec3::UnitY()));
 }
 
 void ViewState::drag(DragMode mode, double dx, double dy, double viewport_height) {

@@ -27,6 +27,18 @@ class ViewState {
   void drag(DragMode mode, double dx, double dy, double viewport_height);
   // Mouse wheel: positive moves closer.
   void scroll(double steps);
+  // Middle-drag, right-drag and the arrow keys: the picture moves by (dx, dy) in units of the
+  // view's ball radius (x right, y up on the screen). Kept in those units, so that it survives a
+  // zoom; the view's centre moves the other way along the trackball's axes (pan_offset).
+  void pan_by(double dx, double dy);
+  const Vec2& pan() const { return pan_; }
+  // Where the view's centre is moved to by the pan, in shadow space, for a ball of `radius`.
+  Vec3 pan_offset(double radius) const;
+  // F, View > Frame all: zoom 1 and no pan (the caller fits the ball to the objects).
+  void unzoom() {
+    zoom_ = 1;
+    pan_ = Vec2::Zero();
+  }
 
   // Degrees, in the order of all_planes(4): xy, xz, xw, yz, yw, zw. Kept within [-180, 180].
   std::array<float, 6>& plane_angles() { return angles_; }
@@ -52,6 +64,7 @@ class ViewState {
   std::array<float, 6> angles_{};
   Eigen::Quaterniond trackball_ = Eigen::Quaterniond::Identity();
   double zoom_ = 1;
+  Vec2 pan_ = Vec2::Zero();
 };
 
 }  // namespace s4d

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "app/dock.hpp"
 #include "app/screen.hpp"
 #include "app/tool_settings.hpp"
 
@@ -17,7 +18,7 @@ using Json = nlohmann::ordered_json;
 
 // The live simulation: its status, every vertex (world coordinates) and where its shadow is on the
 // screen (null when behind the eye), for tests that press on a chosen vertex.
-void dump_simulation(Json& j, Session& s, const Camera& camera, const Vec2& window) {
+void dump_simulation(Json& j, Session& s, const Camera& camera, const Rect& view) {
   j["simulating"] = s.simulating();
   j["state_pending"] = s.state_pending();
   j["physics_error"] = s.physics_error();
@@ -48,7 +49,7 @@ void dump_simulation(Json& j, Session& s, const Camera& camera, const Vec2& wind
     for (int v = 0; v < nv; ++v) {
       ImVec2 px;
       const Vec3 p = s.vertex_shadow(v);
-      pixels.push_back(to_screen(camera, p, window, px) ? Json{px.x, px.y} : Json(nullptr));
+      pixels.push_back(to_screen(camera, p, view, px) ? Json{px.x, px.y} : Json(nullptr));
     }
     j["vertex_pixels"] = pixels;
     j["exploring"] = st.exploring;
@@ -107,7 +108,7 @@ void dump_tools(Json& j, GuiModel& model) {
 }
 
 // What the view shows: its 4D frame, the drawing mode, and where the shadow's pinch points are.
-void dump_view(Json& j, GuiModel& model, const Camera& camera, const Vec2& window) {
+void dump_view(Json& j, GuiModel& model, const Camera& camera, const Rect& view) {
   const Frame<4>& f = model.scene().frame;
   Json frame = Json::array();
   for (int r = 0; r < 4; ++r)
@@ -118,7 +119,7 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Vec2& windo
     Json pinch = Json::array();
     for (const Vec3& p : model.intersections.pinch_at) {
       ImVec2 px;
-      const bool seen = to_screen(camera, p, window, px);
+      const bool seen = to_screen(camera, p, view, px);
       pinch.push_back({{"at", {p.x(), p.y(), p.z()}}, {"pixel", seen ? Json{px.x, px.y} : Json(nullptr)}});
     }
     j["pinch_points"] = pinch;
@@ -132,17 +133,39 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Vec2& windo
 }  // namespace
 
 void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                const Vec2& window, int window_frame) {
+                int window_frame) {
+  const Rect& view = model.layout.view;
   Json j;
   // The frame and the wall clock (s): two dumps give the frame rate over the frames between them.
   j["window_frame"] = window_frame;
   j["wall_time"] = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   j["status"] = model.status;
   j["error"] = model.error;
-  dump_simulation(j, model.session, camera, window);
+  // Where the window's parts are: the 3D view and every panel drawn this frame.
+  auto rect = [](const Rect& r) { return Json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
+  j["view"] = rect(view);
+  Json panels = Json::array();
+  for (const auto& [name, r] : visible_windows()) {
+    Json p = rect(r);
+    p["name"] = name;
+    panels.push_back(p);
+  }
+  j["panels"] = panels;
+  j["ui_scale"] = model.ui_scale;
+  j["start_page"] = model.start_page;
+  Json cards = Json::array();
+  if (model.start_page)
+    for (const auto& [name, r] : model.start_cards) {
+      Json c = rect(r);
+      c["name"] = name;
+      cards.push_back(c);
+    }
+  j["start_cards"] = cards;
+  j["exercise_scene"] = model.exercise_return.has_value();
+  dump_simulation(j, model.session, camera, view);
   dump_checks(j, model.session);
   dump_tools(j, model);
-  dump_view(j, model, camera, window);
+  dump_view(j, model, camera, view);
   j["knot_panel_name"] = model.knot_panel_name;
   Json knot_panels = Json::object();
   knots.dump(knot_panels);

@@ -1,6 +1,6 @@
 // The input file's `dump`: the window's state as JSON, for scripted tests and for checking a run
 // from outside (the simulation's status, the checks, every vertex and where it is on the screen,
-// the panels' readouts, the tools' settings and the history).
+// the panels' readouts, the tools' settings and the history), and where the view and the panels are.
 #pragma once
 #include <string>
 
@@ -12,6 +12,6 @@ namespace s4d {
 
 // Writes the dump to `path`; a failure to write shows as the window's error.
 void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                const Vec2& window, int window_frame);
+                int window_frame);
 
 }  // namespace s4d

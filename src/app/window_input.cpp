@@ -26,7 +26,8 @@ const std::map<std::string, int>& key_names() {
         {"LEFT_ALT", GLFW_KEY_LEFT_ALT}, {"RIGHT_SHIFT", GLFW_KEY_RIGHT_SHIFT},
         {"RIGHT_CONTROL", GLFW_KEY_RIGHT_CONTROL}, {"RIGHT_ALT", GLFW_KEY_RIGHT_ALT}, {"F12", GLFW_KEY_F12},
         {"UP", GLFW_KEY_UP},             {"DOWN", GLFW_KEY_DOWN},             {"LEFT", GLFW_KEY_LEFT},
-        {"RIGHT", GLFW_KEY_RIGHT},       {"LEFT_BRACKET", GLFW_KEY_LEFT_BRACKET}, {"RIGHT_BRACKET", GLFW_KEY_RIGHT_BRACKET}};
+        {"RIGHT", GLFW_KEY_RIGHT},       {"LEFT_BRACKET", GLFW_KEY_LEFT_BRACKET}, {"RIGHT_BRACKET", GLFW_KEY_RIGHT_BRACKET},
+        {"SLASH", GLFW_KEY_SLASH},       {"F1", GLFW_KEY_F1}};
     for (char c = 'A'; c <= 'Z'; ++c) m[std::string(1, c)] = GLFW_KEY_A + (c - 'A');
     for (char c = '0'; c <= '9'; ++c) m[std::string(1, c)] = GLFW_KEY_0 + (c - '0');
     return m;
@@ -118,6 +119,13 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       if (!(ls >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) fail("move-by needs two finite pixel offsets");
       e.kind = InputEvent::Kind::move_by;
       e.at = Vec2(x, y);
+    } else if (word == "move-view") {
+      // A point of the 3D view, wherever the panels put it: (X, Y) in half-sides (the smaller
+      // side) of the view from its centre, Y up (the view's ball spans about -0.9..0.9 after F).
+      double x = 0, y = 0;
+      if (!(ls >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) fail("move-view needs two finite numbers (half-sides of the view from its centre)");
+      e.kind = InputEvent::Kind::move_view;
+      e.at = Vec2(x, y);
     } else if (word == "move-to-vertex") {
       // The pointer to where a simulated vertex is on the screen when the event plays (scripts
       // that follow a moving surface), offset by DX DY pixels.
@@ -170,7 +178,7 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       e.kind = InputEvent::Kind::wait;
     } else {
       fail("unknown event '" + word +
-           "' (move, move-by, move-to-vertex, press, release, scroll, key, key-down, key-up, type, open, shot, dump, "
+           "' (move, move-by, move-view, move-to-vertex, press, release, scroll, key, key-down, key-up, type, open, shot, dump, "
            "quit, wait)");
     }
     if (ls >> arg) fail("unexpected '" + arg + "' at the end of the line");
@@ -242,7 +250,8 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   }
   for (const InputEvent& e : events) {
     if (e.kind == InputEvent::Kind::open || e.kind == InputEvent::Kind::shot || e.kind == InputEvent::Kind::dump ||
-        e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait || e.kind == InputEvent::Kind::move_to_vertex)
+        e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait || e.kind == InputEvent::Kind::move_to_vertex ||
+        e.kind == InputEvent::Kind::move_view)
       commands.push_back(e);
     else
       apply(e);

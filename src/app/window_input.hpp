@@ -5,6 +5,8 @@
 // Input file: one event per line, `# comments`, each line `FRAME EVENT ARGS`:
 //   12 move X Y            cursor to window pixel (X, Y)
 //   12 move-by DX DY       cursor moved by (DX, DY) pixels from where it is
+//   12 move-view X Y       cursor to a point of the 3D view wherever the panels put it: (X, Y)
+//                          in half-sides (the smaller side) of the view from its centre, Y up
 //   12 move-to-vertex N [DX DY]  cursor to where simulated vertex N is on the screen when the
 //                          event plays (offset by DX, DY), its own sheet preferred where the
 //                          shadow folds others onto it
@@ -12,7 +14,8 @@
 //   15 scroll DY           the wheel (positive: away from the user)
 //   16 key-down NAME       17 key-up NAME       18 key NAME (down and up)
 //      NAME: a letter or digit, TAB, ESCAPE, ENTER, BACKSPACE, DELETE, SPACE, LEFT_SHIFT,
-//      LEFT_CONTROL, LEFT_ALT, RIGHT_SHIFT, RIGHT_CONTROL, RIGHT_ALT, F12, UP, DOWN, LEFT, RIGHT
+//      LEFT_CONTROL, LEFT_ALT, RIGHT_SHIFT, RIGHT_CONTROL, RIGHT_ALT, F1, F12, UP, DOWN, LEFT, RIGHT,
+//      LEFT_BRACKET, RIGHT_BRACKET, SLASH
 //   19 type TEXT           TEXT typed (characters) into the focused text field
 //   19 open SPEC           open a scene, scenario, mesh, curve or generator call
 //   20 shot FILE.png       save the window (panels included) after this frame
@@ -37,7 +40,7 @@ namespace s4d {
 
 struct InputEvent {
   enum class Kind { move, move_by, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit, wait,
-                    move_to_vertex };
+                    move_to_vertex, move_view };
   Kind kind = Kind::move;
   int frame = 0;      // the file's frame (0 for live events)
   Vec2 at = Vec2::Zero();

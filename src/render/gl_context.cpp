@@ -192,13 +192,13 @@ Image RenderTarget::resolve_and_read() const {
   return read_framebuffer(width_, height_);
 }
 
-Image read_framebuffer(int width, int height) {
+Image read_framebuffer(int width, int height, int x, int y) {
   Image img;
   img.width = width;
   img.height = height;
   img.rgba.resize(4 * static_cast<std::size_t>(width) * height);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  glReadPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
   check_gl("glReadPixels");
   // OpenGL's first row is the bottom one; images are stored top row first.
   const std::size_t row = 4 * static_cast<std::size_t>(width);

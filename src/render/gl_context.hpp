@@ -56,7 +56,8 @@ class RenderTarget {
 // Throws s4d::Error naming `where` if glGetError reports an error (drains all pending errors).
 void check_gl(const char* where);
 
-// Reads the framebuffer bound for reading into an RGBA image, top row first.
-Image read_framebuffer(int width, int height);
+// Reads the framebuffer bound for reading into an RGBA image, top row first: the rectangle of
+// `width` x `height` whose lower-left corner is (x, y) in OpenGL's pixels (y up).
+Image read_framebuffer(int width, int height, int x = 0, int y = 0);
 
 }  // namespace s4d

@@ -227,7 +227,7 @@ const IntersectionSummary& Renderer::intersections() const { return impl_->inter
 const UploadStats& Renderer::uploads() const { return impl_->uploads; }
 
 // [SECTION] draw
-void Renderer::draw(const Scene& scene, int width, int height) {
+void Renderer::draw(const Scene& scene, int width, int height, int x, int y) {
   if (width < 1 || height < 1)
     throw Error("cannot draw into a " + std::to_string(width) + "x" + std::to_string(height) + " viewport");
   const SceneGeometry geometry = build_scene_geometry(scene, static_cast<double>(width) / height);
@@ -263,11 +263,14 @@ void Renderer::draw(const Scene& scene, int width, int height) {
   std::vector<bool> is_blended(count, false);
   for (const auto& b : blended) is_blended[b.second] = true;
 
-  glViewport(0, 0, width, height);
+  glViewport(x, y, width, height);
   const Vec3f& bg = scene.view.background;
   glClearColor(bg.x(), bg.y(), bg.z(), 1.0f);
   glClearDepth(1.0);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, width, height);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -361,10 +364,10 @@ void Renderer::draw(const Scene& scene, int width, int height) {
   check_gl("Renderer::draw");
 }
 
-Image Renderer::read_pixels(int width, int height) const {
+Image Renderer::read_pixels(int width, int height, int x, int y) const {
   if (width < 1 || height < 1)
     throw Error("cannot read a " + std::to_string(width) + "x" + std::to_string(height) + " image");
-  return read_framebuffer(width, height);
+  return read_framebuffer(width, height, x, y);
 }
 
 // [SECTION] offscreen

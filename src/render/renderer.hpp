@@ -33,10 +33,11 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Draws into the bound framebuffer, viewport (0, 0, width, height).
-  void draw(const Scene& scene, int width, int height);
-  // Reads back the bound framebuffer as an image (top row first).
-  Image read_pixels(int width, int height) const;
+  // Draws into the bound framebuffer, viewport (x, y, width, height) in OpenGL's pixels (y up);
+  // only that rectangle is cleared, so a window's other parts (its panels) can surround it.
+  void draw(const Scene& scene, int width, int height, int x = 0, int y = 0);
+  // Reads back that rectangle of the bound framebuffer as an image (top row first).
+  Image read_pixels(int width, int height, int x = 0, int y = 0) const;
   // The camera of the last draw (identity-looking default before the first): lets the app map
   // the mouse to shadow space with exactly the matrices that were drawn.
   const Camera& camera() const;

@@ -454,7 +454,11 @@ void add_crossings(const Scene& scene, const Camera& camera, double tube, DrawOb
   TubeOptions dot;
   dot.radius = 0.7 * tube;
   dot.sides = 16;
+  // The plain shadow (Fig. 1a) shows no crossing as over or under: the crossings are counted and
+  // coded, not marked.
+  const bool marks = scene.view.curve_mode != CurveMode::kShadow;
   for (const ScreenCrossing& c : found) {
+    if (!marks) break;
     // A short tube along the line of sight reads as a round dot whatever the strand's direction.
     const Vec3 toward = camera.eye() - c.over;
     const Vec3 along = toward.norm() > 0 ? Vec3(toward.normalized()) : Vec3::UnitZ();
@@ -572,10 +576,12 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     d.depth.resize(nv);
     d.colours.resize(nv);
     const Vec3f plain = plain_colour(scene.objects[i]);
+    // The plain shadow of Fig. 1a: a curve's strands in one colour, no cue of depth at all.
+    const bool plain_shadow = d.screen && view.curve_mode == CurveMode::kShadow;
     for (std::size_t v = 0; v < nv; ++v) {
       const double depth = anchor_depth[i][d.mesh.source[v]];
       d.depth[v] = depth;
-      if (!depth_colour) {
+      if (!depth_colour || plain_shadow) {
         d.colours[v] = plain;
       } else if (d.dim == 4) {
         // Frame<4>: larger w is nearer the 4D viewer, so it maps towards red.

@@ -96,7 +96,7 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
   if (scene.scenario.empty())
     throw ParseError(c.file, 0, "a scene, not a scenario: it has no \"scenario\" section (see scenarios/)");
   const Json root = Json::parse(scene.scenario);  // io/scene checked that it is a JSON object
-  c.keys(root, "", {"name", "instruction", "duration", "frames", "script", "verdict"});
+  c.keys(root, "", {"name", "figure", "summary", "instruction", "duration", "frames", "script", "verdict"});
   Scenario s;
   s.file = origin;
   s.dim = surface_dimension(scene);
@@ -106,6 +106,8 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
   s.name = c.text(root.value("name", Json()), "name");
   if (s.name.empty()) c.fail("name", "must not be empty");
   s.instruction = root.contains("instruction") ? c.text(root["instruction"], "instruction") : "";
+  s.figure = root.contains("figure") ? c.text(root["figure"], "figure") : "";
+  s.summary = root.contains("summary") ? c.text(root["summary"], "summary") : "";
   s.duration = c.number(root.value("duration", Json()), "duration", 1e-3, 1e4);
   s.frames = c.integer(root.value("frames", Json(4)), "frames", 1, 1000);
   auto known = [&](const std::string& name, const std::string& where) {

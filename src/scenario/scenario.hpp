@@ -61,6 +61,8 @@ struct Scenario {
   std::filesystem::path file;
   std::string name, description;
   std::string instruction;      // one line: what to do by hand in the window
+  std::string figure;           // the paper's figure it comes from ("Fig. 14"), for the start page
+  std::string summary;          // one line of what it shows, for the start page
   int dim = 4;                  // of the simulation: 3 when every surface lies in R^3
   double duration = 1;          // s of simulated time
   int frames = 4;               // PNG frames `shadow4d run` saves (plus the initial one)

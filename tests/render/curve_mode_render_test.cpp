@@ -115,6 +115,22 @@ TEST(CurveModeRender, PlainShadowIsOneFlatColourPerStrand) {
   EXPECT_LE(inside_pixels(render_offscreen(sc, kW, kH), sc.view.background, {red, blue}).spread, 2);
 }
 
+// With the window's defaults (depth colour, the intersection marks on), the plain shadow is still
+// Fig. 1a: one colour, no crossing dots; the diagram keeps its depth colours.
+TEST(CurveModeRender, PlainShadowIgnoresDepthColourAndCrossingMarks) {
+  Scene sc = trefoil_scene(CurveMode::kShadow);
+  const Vec3f red(0.85f, 0.2f, 0.15f);
+  sc.objects[0].colour = red;
+  sc.view.depth_colour = true;
+  sc.view.intersections = true;
+  const Inside plain = inside_pixels(render_offscreen(sc, kW, kH), sc.view.background, {red});
+  EXPECT_GT(plain.count, 300);
+  EXPECT_LE(plain.spread, 2) << "no depth colour, no crossing dot: every strand pixel is the one colour";
+  sc.view.curve_mode = CurveMode::kDiagram;
+  EXPECT_GT(inside_pixels(render_offscreen(sc, kW, kH), sc.view.background, {red}).spread, 40)
+      << "the diagram is drawn in depth colours";
+}
+
 // The plain shadow tells nothing of depth: where two curves cross, the one drawn later shows,
 // whichever is nearer; the tubes show the nearer one.
 TEST(CurveModeRender, PlainShadowShowsNoDepthWhereCurvesCross) {

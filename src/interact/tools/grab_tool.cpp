@@ -100,6 +100,7 @@ void GrabTool::release(const ToolInput& in, Session& s) {
   holding_ = false;
   s.send(live::Release{});
   s.set_hand(hand_, false);
+  message_ = carry_ ? "let go: the patch stays held where it is (P unpins)" : "let go";
 }
 
 bool GrabTool::wheel(double steps, const ToolInput& in, Session& s) {

@@ -280,6 +280,7 @@ bool KnotSketchTool::finish(Session& s) {
   s.send(live::SketchClear{});
   offer_obstacles(s);
   last_ = SketchPublished();
+  finished_ = true;
   message_ = "sketched " + s.scene().objects.back().name + ": " + last_name_ + ", " + std::to_string(link.crossings) +
              " crossing(s), Gauss code " + (last_gauss_.empty() ? "(none)" : last_gauss_);
   return true;

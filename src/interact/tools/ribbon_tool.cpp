@@ -67,6 +67,7 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
                   came_back ? " (a loop: the stroke came back to its start)" : "", r.passages.size(),
                   r.passages.size() - static_cast<std::size_t>(below), below);
     message_ = b;
+    finished_ = true;
     s.objects_changed();  // the bodies there keep their motion and pins
     return true;
   } catch (const std::exception& e) {

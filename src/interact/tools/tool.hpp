@@ -107,9 +107,13 @@ class Tool {
   virtual void overlay(Overlay&, const Session&) const {}
   // A status message for the window (what just happened), taken once.
   std::string take_message() { return std::exchange(message_, std::string()); }
+  // True once after the tool made what it was chosen for (a sketch finished): the window then
+  // returns to Touch and frames the new object.
+  bool take_finished() { return std::exchange(finished_, false); }
 
  protected:
   std::string message_;
+  bool finished_ = false;
 };
 
 }  // namespace s4d
