@@ -23,6 +23,7 @@
 
 #include "app/dock.hpp"
 #include "app/haptics_window.hpp"
+#include "app/hint_markers.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
 #include "app/screen.hpp"
@@ -32,6 +33,7 @@
 #include "app/window_dump.hpp"
 #include "interact/tools/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
+#include "core/stop_signal.hpp"
 #include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/image.hpp"
@@ -409,6 +411,13 @@ class GuiApp {
   // process exit code.
   int run() {
     for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
+      if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, kept to be offered back
+        std::cerr << "shadow4d: signal " << stop_signal() << ": closing, the work autosaved to " << autosaver_.path().string()
+                  << "\n";
+        if (!model_.pending_restore && options_.autosave_seconds > 0) autosaver_.save_now(model_.session, false);
+        model_.session.close();
+        return exit_code_;
+      }
       glfwPollEvents();
       update_ui_scale();
       take_script_events();
@@ -420,6 +429,7 @@ class GuiApp {
       update_session();
       const ToolInput ti = tool_input();
       sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
+      take_marked_sheet();
       route_input(model_, routing_, input_, ti, knot_panels_);
       draw_panels();
       keep_messages();
@@ -428,7 +438,7 @@ class GuiApp {
       draw_scene_and_shots(last);
       if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
       model_.knot_panel_name = knot_panels_.shown_name();
-      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, path, renderer_.camera(), frame);
+      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, hints_, path, renderer_.camera(), frame);
       dumps_.clear();
       glfwSwapBuffers(window_);
       if (last) break;
@@ -443,6 +453,7 @@ class GuiApp {
   // settings, for undo steps and saved sessions.
   void connect_session() {
     model_.audio = std::make_unique<AudioPlayer>();
+    if (!model_.audio->available()) std::cerr << "shadow4d: " << model_.audio->status() << "\n";  // once, not ALSA's lines
     model_.session.capture_view = [this](DocumentState& d) {
       d.angles = model_.view.plane_angles();
       d.trackball = model_.view.trackball();
@@ -500,9 +511,13 @@ class GuiApp {
   // the simulation, as a user's next move comes after they see it, whatever the machine; and while
   // a `wait` holds for the panels' background work.
   void take_script_events() {
-    if (waiting_ && (!knot_panels_.busy() || std::chrono::steady_clock::now() - wait_start_ > std::chrono::seconds(60)))
-      waiting_ = false;
-    if (!waiting_ && (!model_.session.state_pending() || ++waited_ > kMaxStateWaitFrames)) {
+    const bool timed_out = std::chrono::steady_clock::now() - wait_start_ > std::chrono::seconds(60);
+    if (waiting_ && (!knot_panels_.busy() || timed_out)) waiting_ = false;
+    if (wait_until_ >= 0) {
+      const HapticSnapshot* snap = model_.session.snapshot();
+      if (timed_out || (snap && snap->status.sim_time >= wait_until_)) wait_until_ = -1;
+    }
+    if (!waiting_ && wait_until_ < 0 && (!model_.session.state_pending() || ++waited_ > kMaxStateWaitFrames)) {
       ++script_frame_;
       waited_ = 0;
     }
@@ -512,8 +527,10 @@ class GuiApp {
       else if (e.kind == InputEvent::Kind::dump) dumps_.push_back(e.text);
       else if (e.kind == InputEvent::Kind::quit) model_.quit = true;
       else if (e.kind == InputEvent::Kind::wait) waiting_ = true, wait_start_ = std::chrono::steady_clock::now();
+      else if (e.kind == InputEvent::Kind::wait_time) wait_for(e);
       else if (e.kind == InputEvent::Kind::move_to_vertex) move_to_vertex(input_, model_, e, renderer_.camera());
       else if (e.kind == InputEvent::Kind::move_view) move_to_view_point(input_, model_.layout.view, e.at);
+      else if (e.kind == InputEvent::Kind::move_to_hint) move_to_hint(e);
     }
   }
 
@@ -561,6 +578,28 @@ class GuiApp {
     model_.dock.place(model_.layout);
   }
 
+  // Over a scenario's marker, Touch takes the marked sheet (where the shadow folds others onto it).
+  void take_marked_sheet() {
+    if (model_.tool != ToolChoice::kTouch || routing_.tool_drag) return;
+    const int m = hints_.marker_under(model_, renderer_.camera(), model_.layout.view, input_.cursor());
+    if (m < 0 || hints_.steps()[static_cast<std::size_t>(m)].vertices.empty()) return;
+    const double w = hints_.marked_w(model_, m);
+    if (std::isfinite(w)) model_.grab.prefer_depth(w);
+    // Where no sheet is under the marker's pixel (a thin edge), the marker itself is the handle.
+    const int v = hints_.steps()[static_cast<std::size_t>(m)].vertices.front();
+    for (int o = 0; o < static_cast<int>(model_.scene().objects.size()); ++o) {
+      const int first = model_.session.first_vertex(o);
+      if (first < 0 || v < first || v >= first + model_.session.vertex_count(o)) continue;
+      SheetHit h;
+      h.object = o;
+      h.vertex = v - first;
+      h.point = model_.session.vertex_shadow(v);
+      h.w = model_.session.vertex_view(v)(3);
+      h.distance = (h.point - renderer_.camera().eye()).norm();
+      if (h.point.allFinite()) model_.grab.offer_handle(h);
+    }
+  }
+
   void keep_messages() {
     if (model_.status == last_status_) return;
     last_status_ = model_.status;
@@ -568,8 +607,30 @@ class GuiApp {
     if (model_.messages.size() > 500) model_.messages.erase(model_.messages.begin());
   }
 
+  void wait_for(const InputEvent& e) {
+    const HapticSnapshot* snap = model_.session.snapshot();
+    wait_until_ = e.scroll + (e.text == "wait-sim" && snap ? snap->status.sim_time : 0.0);
+    wait_start_ = std::chrono::steady_clock::now();
+  }
+
+  // The input file's move-to-hint: the pointer to where a marker (or its target) is drawn now.
+  void move_to_hint(const InputEvent& e) {
+    const auto& steps = hints_.steps();
+    ImVec2 px;
+    if (e.vertex >= 1 && e.vertex <= static_cast<int>(steps.size())) {
+      const HintMarkers::Step& s = steps[static_cast<std::size_t>(e.vertex - 1)];
+      const Vec4 at = e.text == "target" ? s.target : hints_.centre(model_, s);
+      if (to_screen(renderer_.camera(), HintMarkers::shadow_of(model_, at), model_.layout.view, px)) {
+        input_.move_to(Vec2(px.x, px.y) + e.at);
+        return;
+      }
+    }
+    model_.status = "the input file's marker " + std::to_string(e.vertex) + " is not on the screen";
+  }
+
   void update_session() {
     model_.session.refresh();
+    hints_.update(model_, glfwGetTime());
     if (!model_.pending_settings.empty() && model_.session.snapshot()) {  // a session's hand settings
       const ToolSettings pending = std::exchange(model_.pending_settings, {});
       apply_tool_settings(model_, pending);
@@ -623,6 +684,7 @@ class GuiApp {
       tool->overlay(overlay, model_.session);
       draw_overlay(overlay, camera, view);
     }
+    hints_.draw(model_, camera, view, glfwGetTime());
     knot_panels_.overlay(model_, camera, view);
   }
 
@@ -683,6 +745,7 @@ class GuiApp {
   KnotPanels knot_panels_;
   GuiModel model_;
   StartPage start_page_;
+  HintMarkers hints_;
   bool start_loaded_ = false;
   Autosaver autosaver_;
   Routing routing_;
@@ -694,6 +757,7 @@ class GuiApp {
   std::string last_status_;
   int script_frame_ = 0, waited_ = 0;
   bool waiting_ = false;
+  double wait_until_ = -1;  // wait-time: the simulated time the script waits for
   std::chrono::steady_clock::time_point wait_start_{};
   int exit_code_ = 0;
 };
@@ -740,6 +804,7 @@ int run_gui_app(const GuiOptions& options) {
       return 1;
     }
   }
+  install_stop_signals();  // before SDL starts (audio): it would install its own
   GLFWwindow* window = create_window(options);
   if (!window) return 1;
   IMGUI_CHECKVERSION();

@@ -76,6 +76,10 @@ struct GuiModel {
   bool open_file_dialog = false; // File > Open, asked from elsewhere (the start page)
   std::optional<SessionFile> exercise_return;  // the scene an exercise left, to go back to
   bool leave_exercise = false;   // the exercise's "Leave" button
+  // [hints] the scenario's markers (app/hint_markers.hpp)
+  std::string hint_next;         // what Show me will show ("" when nothing is left to do)
+  std::string hint_progress;     // the verdict's progress line, as shown
+  bool show_me = false;          // the band's Show me button
   std::string knot_panel_name;   // what the Knot panel names the selected curve (for dumps)
   std::set<std::string> hidden_knot_names;  // objects whose knot name is an exercise's answer
   bool depth_tone = false;       // while exploring, a tone whose pitch follows the probe's depth

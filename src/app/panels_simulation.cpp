@@ -259,7 +259,7 @@ int instruction_lines(GuiModel& model, float width) {
   const float inner = std::max(width - 2 * ImGui::GetStyle().WindowPadding.x, 50.0f);
   const float h = ImGui::CalcTextSize(text.c_str(), nullptr, false, inner).y;
   const int lines = static_cast<int>(std::ceil(h / ImGui::GetTextLineHeight() - 0.01f));
-  return std::max(lines, 1) + (model.session.scenario() ? 1 : 0);  // and the verdict's line
+  return std::max(lines, 1) + (model.session.scenario() ? 2 : 0);  // and the verdict's and progress's lines
 }
 
 // The instruction in the band above the view, with the live verdict: never over what it says to touch.
@@ -281,6 +281,24 @@ void Panels::scenario_banner(GuiModel& model) {
       ImGui::TextColored(pass ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.75f, 0.35f, 1), "%s", pass ? "PASS" : "not yet");
       ImGui::SameLine();
       ImGui::TextUnformatted(c.verdict->detail.c_str());
+      if (const auto& p = c.verdict->progress) {
+        char line[160];
+        if (std::isfinite(p->start))
+          std::snprintf(line, sizeof line, "%s %.3g -> %.3g, goal %s %.3g", p->what.c_str(), p->start, p->now,
+                        p->rising ? ">=" : "<=", p->goal);
+        else
+          std::snprintf(line, sizeof line, "%s %.3g, goal %s %.3g", p->what.c_str(), p->now, p->rising ? ">" : "<", p->goal);
+        ImGui::SetNextItemWidth(std::min(200.0f * model.ui_scale, ImGui::GetContentRegionAvail().x * 0.3f));
+        ImGui::ProgressBar(static_cast<float>(pass ? 1.0 : p->fraction()), ImVec2(200.0f * model.ui_scale, 0), "");
+        ImGui::SameLine();
+        ImGui::TextUnformatted(line);
+        model.hint_progress = line;
+      }
+      if (!model.hint_next.empty()) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Show me")) model.show_me = true;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", model.hint_next.c_str());
+      }
     } else {
       ImGui::TextDisabled("checking...");
     }

@@ -130,10 +130,26 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Rect& view)
   j["depth_tone"] = model.depth_tone;
 }
 
+// The scenario's steps as drawn: each marker's and target's pixel (null off the screen), done or not.
+void dump_hints(Json& j, const GuiModel& model, const HintMarkers& hints, const Camera& camera) {
+  const Rect& view = model.layout.view;
+  Json steps = Json::array();
+  auto pixel = [&](const Vec4& world) {
+    ImVec2 px;
+    return to_screen(camera, HintMarkers::shadow_of(model, world), view, px) ? Json{px.x, px.y} : Json(nullptr);
+  };
+  for (const HintMarkers::Step& s : hints.steps())
+    steps.push_back({{"marker", pixel(hints.centre(model, s))}, {"target", pixel(s.target)}, {"done", s.done},
+                     {"say", s.say}, {"vertices", s.vertices.size()}});
+  j["hints"] = steps;
+  j["hint_next"] = model.hint_next;
+  j["hint_progress"] = model.hint_progress;
+}
+
 }  // namespace
 
-void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                int window_frame) {
+void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hints, const std::string& path,
+                const Camera& camera, int window_frame) {
   const Rect& view = model.layout.view;
   Json j;
   // The frame and the wall clock (s): two dumps give the frame rate over the frames between them.
@@ -164,6 +180,7 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& pat
   j["exercise_scene"] = model.exercise_return.has_value();
   dump_simulation(j, model.session, camera, view);
   dump_checks(j, model.session);
+  dump_hints(j, model, hints, camera);
   dump_tools(j, model);
   dump_view(j, model, camera, view);
   j["knot_panel_name"] = model.knot_panel_name;

@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "app/hint_markers.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
 #include "core/camera.hpp"
@@ -11,7 +12,7 @@
 namespace s4d {
 
 // Writes the dump to `path`; a failure to write shows as the window's error.
-void dump_state(GuiModel& model, const KnotPanels& knots, const std::string& path, const Camera& camera,
-                int window_frame);
+void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hints, const std::string& path,
+                const Camera& camera, int window_frame);
 
 }  // namespace s4d

@@ -126,6 +126,17 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       if (!(ls >> x >> y) || !std::isfinite(x) || !std::isfinite(y)) fail("move-view needs two finite numbers (half-sides of the view from its centre)");
       e.kind = InputEvent::Kind::move_view;
       e.at = Vec2(x, y);
+    } else if (word == "move-to-hint") {
+      double dx = 0, dy = 0;
+      if (!(ls >> e.vertex) || e.vertex < 1) fail("move-to-hint needs a marker number (1 or more)");
+      if (!(ls >> e.text) || (e.text != "marker" && e.text != "target")) fail("move-to-hint N needs marker or target");
+      if (ls >> dx) {
+        if (!(ls >> dy) || !std::isfinite(dx) || !std::isfinite(dy)) fail("move-to-hint's offset needs two finite pixel numbers");
+      } else {
+        ls.clear();
+      }
+      e.kind = InputEvent::Kind::move_to_hint;
+      e.at = Vec2(dx, dy);
     } else if (word == "move-to-vertex") {
       // The pointer to where a simulated vertex is on the screen when the event plays (scripts
       // that follow a moving surface), offset by DX DY pixels.
@@ -176,10 +187,18 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       e.kind = InputEvent::Kind::quit;
     } else if (word == "wait") {
       e.kind = InputEvent::Kind::wait;
+    } else if (word == "wait-time" || word == "wait-sim") {
+      // As a person waits for what the instruction says to happen (the sphere to settle): the
+      // file's frames stop until the simulation's clock reaches T s (wait-sim: S s more than when
+      // the event plays), 60 s of wall time at most.
+      if (!(ls >> e.scroll) || !std::isfinite(e.scroll) || e.scroll < 0 || e.scroll > 1e4)
+        fail(word + " needs a simulated time in seconds (0 to 10000)");
+      e.kind = InputEvent::Kind::wait_time;
+      e.text = word;
     } else {
       fail("unknown event '" + word +
-           "' (move, move-by, move-view, move-to-vertex, press, release, scroll, key, key-down, key-up, type, open, shot, dump, "
-           "quit, wait)");
+           "' (move, move-by, move-view, move-to-hint, move-to-vertex, press, release, scroll, key, key-down, key-up, type, open, shot, dump, "
+           "quit, wait, wait-time, wait-sim)");
     }
     if (ls >> arg) fail("unexpected '" + arg + "' at the end of the line");
     out.push_back(e);
@@ -251,7 +270,8 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   for (const InputEvent& e : events) {
     if (e.kind == InputEvent::Kind::open || e.kind == InputEvent::Kind::shot || e.kind == InputEvent::Kind::dump ||
         e.kind == InputEvent::Kind::quit || e.kind == InputEvent::Kind::wait || e.kind == InputEvent::Kind::move_to_vertex ||
-        e.kind == InputEvent::Kind::move_view)
+        e.kind == InputEvent::Kind::move_view || e.kind == InputEvent::Kind::move_to_hint ||
+        e.kind == InputEvent::Kind::wait_time)
       commands.push_back(e);
     else
       apply(e);

@@ -7,6 +7,8 @@
 //   12 move-by DX DY       cursor moved by (DX, DY) pixels from where it is
 //   12 move-view X Y       cursor to a point of the 3D view wherever the panels put it: (X, Y)
 //                          in half-sides (the smaller side) of the view from its centre, Y up
+//   12 move-to-hint N marker|target [DX DY]  cursor to where the scenario's marker N (from 1), or
+//                          its target, is drawn when the event plays
 //   12 move-to-vertex N [DX DY]  cursor to where simulated vertex N is on the screen when the
 //                          event plays (offset by DX, DY), its own sheet preferred where the
 //                          shadow folds others onto it
@@ -21,6 +23,8 @@
 //   20 shot FILE.png       save the window (panels included) after this frame
 //   21 dump FILE.json      write the session's state (simulation, checks, vertex positions)
 //   22 quit
+//   23 wait-time T         the script's frames stop counting until the simulation's time is T s
+//   23 wait-sim S          ... until S s more of simulated time have passed
 //   23 wait                the script's frames stop counting until the window's background work
 //                          (naming, making a table knot, checking an exercise) is done (60 s at most)
 // The file's frames count only frames that show the session's latest state: while an undone or
@@ -40,12 +44,12 @@ namespace s4d {
 
 struct InputEvent {
   enum class Kind { move, move_by, press, release, scroll, key_down, key_up, chr, open, shot, dump, quit, wait,
-                    move_to_vertex, move_view };
+                    move_to_vertex, move_view, move_to_hint, wait_time };
   Kind kind = Kind::move;
   int frame = 0;      // the file's frame (0 for live events)
   Vec2 at = Vec2::Zero();
   int button = 0;     // 0 left, 1 right, 2 middle
-  double scroll = 0;
+  double scroll = 0;  // also wait-time's T
   int key = 0;        // GLFW key code
   unsigned codepoint = 0;
   std::string text;   // open / shot / dump argument

@@ -96,7 +96,7 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
   if (scene.scenario.empty())
     throw ParseError(c.file, 0, "a scene, not a scenario: it has no \"scenario\" section (see scenarios/)");
   const Json root = Json::parse(scene.scenario);  // io/scene checked that it is a JSON object
-  c.keys(root, "", {"name", "figure", "summary", "instruction", "duration", "frames", "script", "verdict"});
+  c.keys(root, "", {"name", "figure", "summary", "instruction", "duration", "frames", "script", "hints", "verdict"});
   Scenario s;
   s.file = origin;
   s.dim = surface_dimension(scene);
@@ -145,6 +145,23 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
       }
       s.script.push_back(act);
     }
+  }
+  if (root.contains("hints")) {
+    const Json& hs = root["hints"];
+    if (!hs.is_array()) c.fail("hints", "must be an array");
+    for (std::size_t i = 0; i < hs.size(); ++i) {
+      const std::string w = "hints[" + std::to_string(i) + "]";
+      c.keys(hs[i], w, {"select", "by", "say"});
+      Hint h;
+      h.select = parse_selection(hs[i].value("select", Json()), c, w + ".select", s.dim);
+      known(h.select.object, w + ".select.object");
+      h.by = hs[i].contains("by") ? c.vec(hs[i]["by"], w + ".by", s.dim) : std::vector<double>(s.dim, 0.0);
+      h.say = hs[i].contains("say") ? c.text(hs[i]["say"], w + ".say") : "";
+      s.hints.push_back(std::move(h));
+    }
+  } else {  // the person's part of the script: its moves and pulls that by hand are theirs
+    for (const ScriptAction& a : s.script)
+      if (a.kind != "hold" && a.by_hand == ByHand::kSkip) s.hints.push_back({a.select, a.by, ""});
   }
 
   const Json& v = root.value("verdict", Json());

@@ -48,6 +48,15 @@ struct ScriptAction {
   double max_force = 1;      // N per vertex, "pull"
 };
 
+// A step of the scenario as a person does it by hand, for the window's markers and Show me: what
+// to take (a numbered marker on those vertices) and where to take it (a target `by` away). Given in
+// the file ("hints"), or else the script's moves and pulls that the person does instead of it.
+struct Hint {
+  VertexSelection select;
+  std::vector<double> by;  // D numbers
+  std::string say;         // one line ("carry the red rim outward"); may be empty
+};
+
 struct VerdictSpec {
   std::string kind;  // untied | knotted | slides-off | lifted | deforms | shadow-clean
   std::map<std::string, double> numbers;  // thresholds, by name
@@ -67,6 +76,7 @@ struct Scenario {
   double duration = 1;          // s of simulated time
   int frames = 4;               // PNG frames `shadow4d run` saves (plus the initial one)
   std::vector<ScriptAction> script;
+  std::vector<Hint> hints;
   VerdictSpec verdict;
 
   int object_index(const std::string& name) const;  // -1 when there is none

@@ -70,6 +70,13 @@ void VerdictJudge::observe(double t0, double t1, std::span<const Vec4> x) {
   if (reference_time_ > 0 && t0 < reference_time_ && t1 >= reference_time_) reference_.assign(x.begin(), x.end());
 }
 
+double VerdictProgress::fraction() const {
+  const double span = goal - start;
+  if (!std::isfinite(span) || !std::isfinite(now)) return 0;
+  if (std::abs(span) < 1e-12) return (rising ? now >= goal : now <= goal) ? 1 : 0;
+  return std::clamp((now - start) / span, 0.0, 1.0);
+}
+
 VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
   VerdictResult r;
   auto& verdict = r.numbers;
@@ -106,11 +113,15 @@ VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
       const double need = number("end_fraction", 0.9);
       ok = ends >= need && k1.open_crossings <= number("max_open_crossings", 0) && k1.error.empty() &&
            k1.determinant == 1 && k1.simplified_crossings == 0;
+      const double ends0 = (c0.back() - c0.front()).norm() / length;
+      r.progress = VerdictProgress{"ends apart, of the length", ends0, ends, need, true};
       detail = "ends " + fmt(ends) + " of the length apart (need >= " + fmt(need) + "), shadow centre line " +
                std::to_string(k1.open_crossings) + " crossings in the worst transverse view, closed: " +
                (k1.simplified_crossings == 0 ? "unknot" : "det " + std::to_string(k1.determinant));
     } else {
       const int need = static_cast<int>(number("min_crossings", 3));
+      r.progress = VerdictProgress{"crossings in every view", static_cast<double>(k0.min_crossings),
+                                   static_cast<double>(k1.min_crossings), static_cast<double>(need), true};
       ok = k1.min_crossings >= need && k1.error.empty() && k0.error.empty() && k1.determinant == k0.determinant &&
            k1.fingerprint == k0.fingerprint && k0.determinant == 3;
       detail = "closed centre line has >= " + std::to_string(k1.min_crossings) + " crossings in every view (need " +
@@ -128,6 +139,7 @@ VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
     verdict["object_top"] = top;
     verdict["support_bottom"] = support;
     ok = top < support - number("margin", 0);
+    r.progress = VerdictProgress{"the cloth's top below the support by", std::nan(""), support - top, number("margin", 0), true};
     detail = verdict_.object + " top at " + fmt(top) + ", below the support's lowest point " + fmt(support) +
              (ok ? " (slid off)" : " (still held)");
   } else if (kind == "lifted") {
@@ -149,6 +161,7 @@ VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
     verdict["reference_time"] = reference_time_;
     const double need = number("min_rise", 0);
     ok = worst >= need;
+    r.progress = VerdictProgress{"the lowest part's rise", 0, worst, need, true};
     detail = std::to_string(nc) + " components, the lowest rose " + fmt(worst) + " (need >= " + fmt(need) + ")" +
              (reference_time_ > 0 ? " since t = " + fmt(reference_time_) + " s" : "");
   } else if (kind == "shadow-clean") {
@@ -164,6 +177,7 @@ VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
     verdict["final_true_curves"] = s1.true_curves;
     verdict["final_coplanar_pairs"] = s1.coplanar_pairs;
     const double need0 = number("min_initial_length", 0), max1 = number("max_final_length", 0);
+    r.progress = VerdictProgress{"shadow curves", s0.total_length, s1.total_length, max1, false};
     ok = s0.total_length >= need0 && s0.total_length > 0 && s1.total_length <= max1 && s1.true_curves == 0 &&
          s1.coplanar_pairs == 0;
     detail = "shadow self-intersection length " + fmt(s0.total_length) + " in " + std::to_string(s0.curves) +
@@ -178,6 +192,7 @@ VerdictResult VerdictJudge::judge(std::span<const Vec4> x) const {
     verdict["max_displacement"] = moved;
     const double need = number("min_displacement", 0);
     ok = moved >= need;
+    r.progress = VerdictProgress{"the body moved by", 0, moved, need, true};
     detail = "largest displacement of a vertex the tool does not hold " + fmt(moved) + " (need >= " + fmt(need) + ")";
   }
   r.pass = ok;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <span>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +13,20 @@
 
 namespace s4d {
 
+// The verdict's one quantity as the window shows it while a person works towards it:
+// "shadow curves 3.88 -> 1.20, goal <= 0".
+struct VerdictProgress {
+  std::string what;
+  double start = 0, now = 0, goal = 0;
+  bool rising = true;  // the goal is reached from below (>=) or, false, from above (<=)
+  // How far from start to goal, in [0, 1].
+  double fraction() const;
+};
+
 struct VerdictResult {
   bool pass = false;
   std::string detail;                          // what was measured against what was needed
+  std::optional<VerdictProgress> progress;
   nlohmann::ordered_json numbers = nlohmann::ordered_json::object();  // for metrics.json
 };
 

@@ -1010,7 +1010,9 @@ TEST(GuiSmoke, PushingByHandMovesThePinchPointsOfTheTorus) {
   const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_pinch";
   const std::string scenario = std::string(S4D_SOURCE_DIR) + "/scenarios/clifford-torus-pinch.json";
   // Zoomed out a little, so that no panel covers the curves' ends.
-  const std::vector<std::string> zoom{at(3, view_at(640, 400)), at(5, view_at(641, 400)), at(7, "scroll -3")};
+  // F first: the scenario opens framed on its steps' targets too; F frames the torus alone, the
+  // view these pixels were chosen in.
+  const std::vector<std::string> zoom{at(2, "key F"), at(3, view_at(640, 400)), at(5, view_at(641, 400)), at(7, "scroll -3")};
   std::vector<std::string> first = zoom;
   first.push_back(at(12, "dump " + (dir / "start.json").string()));
   first.push_back(at(13, "shot " + (dir / "start.png").string()));
@@ -1071,7 +1073,7 @@ TEST(GuiSmoke, CarryingPatchesByHandCancelsThePinchPointsOfTheTorus) {
   std::filesystem::remove_all(dir);
   const std::string scenario = std::string(S4D_SOURCE_DIR) + "/scenarios/clifford-torus-pinch.json";
   // Zoomed out: the hand's workspace covers what the view shows, and the rims go far.
-  std::vector<std::string> l{at(3, view_at(640, 400)), at(5, view_at(641, 400)), at(7, "scroll -6"), at(10, "key C")};
+  std::vector<std::string> l{at(2, "key F"), at(3, view_at(640, 400)), at(5, view_at(641, 400)), at(7, "scroll -6"), at(10, "key C")};
   int f = 11;
   for (int i = 0; i < 8; ++i) l.push_back(at(f++, "key RIGHT_BRACKET"));  // 0.5 * 1.25^8 = 2.98
   l.push_back(at(f, "dump " + (dir / "start.json").string()));

@@ -50,6 +50,10 @@ std::vector<SheetHit> GrabTool::pick(const ToolInput& in, const Session& s) {
 
 void GrabTool::hover(const ToolInput& in, Session& s) {
   hits_ = pick(in, s);
+  if (handle_) {
+    if (hits_.empty()) hits_.push_back(*handle_);
+    handle_.reset();
+  }
   right_ = in.view.right;
   up_ = in.view.up;
   if ((in.view.cursor - tab_cursor_).norm() > 4) sheet_ = 0;

@@ -7,6 +7,7 @@
 // follows the hand and stays held where it is let go (the local deformations of Fig. 12).
 #pragma once
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "view/pick.hpp"
@@ -43,6 +44,9 @@ class GrabTool final : public Tool {
   // The next hover takes the sheet under the cursor nearest this depth in w, as Tab would (an
   // input script pointing at a vertex means that vertex's sheet).
   void prefer_depth(double w) { preferred_w_ = w; }
+  // A handle under the cursor (a scenario's marker): taken by the next hover when no sheet is hit
+  // there (a ribbon's thin end seen edge on), as a press on the marker takes what it marks.
+  void offer_handle(const SheetHit& h) { handle_ = h; }
   static constexpr double kMinCarryRadius = 0.01, kMaxCarryRadius = 10;
 
  private:
@@ -64,6 +68,7 @@ class GrabTool final : public Tool {
   Vec3 plane_point_ = Vec3::Zero();  // the drag plane passes through it, facing the eye
   Vec3 hand_ = Vec3::Zero();
   Vec3 right_ = Vec3::UnitX(), up_ = Vec3::UnitY();  // the view's axes at the last hover
+  std::optional<SheetHit> handle_;
   double preferred_w_ = std::numeric_limits<double>::quiet_NaN();
 };
 
