@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev nlohmann-json3-dev libcli11-dev libspdlog-dev libstb-dev
   libglfw3-dev libimgui-dev libegl-dev libgl-dev libopengl-dev libegl-mesa0 libgl1-mesa-dri
-  regina-normal-dev libgmp-dev libxml2-dev libspnav-dev libsdl2-dev
+  regina-normal-dev libgmp-dev libxml2-dev libspnav-dev libsdl2-dev libasound2-dev
   libgtest-dev libbenchmark-dev
 )
 if [[ "${1:-build}" == test ]]; then

@@ -11,6 +11,9 @@
 
 #if defined(S4D_HAVE_SDL2)
 #include <SDL.h>
+#if defined(S4D_HAVE_ALSA)
+#include <alsa/asoundlib.h>
+#endif
 #endif
 
 namespace s4d {
@@ -57,6 +60,19 @@ struct AudioPlayer::Impl {
 #endif
 };
 
+#if defined(S4D_HAVE_SDL2)
+namespace {
+#if defined(S4D_HAVE_ALSA)
+// ALSA prints every failed probe of a missing sound card on stderr (eight lines on a machine with
+// none); the status line says once why sound is off instead.
+extern "C" void quiet_alsa(const char*, int, const char*, int, const char*, ...) {}
+void silence_alsa() { snd_lib_error_set_handler(quiet_alsa); }
+#else
+void silence_alsa() {}
+#endif
+}  // namespace
+#endif
+
 AudioPlayer::AudioPlayer(const AudioPlayerOptions& options) noexcept {
   try {
     impl_ = std::make_unique<Impl>();
@@ -66,6 +82,10 @@ AudioPlayer::AudioPlayer(const AudioPlayerOptions& options) noexcept {
 #if defined(S4D_HAVE_SDL2)
   Impl& m = *impl_;
   try {
+    // SDL would catch SIGINT and SIGTERM and only queue an SDL_QUIT no one reads: the program's own
+    // handlers (core/stop_signal) end the window cleanly.
+    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+    silence_alsa();
     if (!options.driver.empty()) SDL_SetHint(SDL_HINT_AUDIODRIVER, options.driver.c_str());
     const bool init_ok = SDL_InitSubSystem(SDL_INIT_AUDIO) == 0;
     if (!options.driver.empty()) SDL_ResetHint(SDL_HINT_AUDIODRIVER);
