@@ -65,14 +65,18 @@ double probe_depth_fraction(const Scene& scene, const ViewFit& fit, const Vec3& 
 
 namespace {
 
-// A file opened or saved goes to the start page's recent list (beside the autosave).
+// A file opened or saved goes to the start page's recent list.
 void remember(const GuiModel& model, const std::string& spec) {
   std::error_code ec;
   if (model.autosave_path.empty() || !std::filesystem::is_regular_file(spec, ec)) return;
-  RecentFiles(std::filesystem::path(model.autosave_path).parent_path() / "recent.txt").add(spec);
+  recent_files(model).add(spec);
 }
 
 }  // namespace
+
+RecentFiles recent_files(const GuiModel& model) {
+  return RecentFiles(std::filesystem::path(model.autosave_path).parent_path() / "recent.txt");
+}
 
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {

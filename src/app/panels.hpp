@@ -14,6 +14,7 @@
 #include "app/file_browser.hpp"
 #include "app/knot_names.hpp"
 #include "app/tool_registry.hpp"
+#include "io/recent_files.hpp"
 #include "app/view_state.hpp"
 #include "audio/audio_player.hpp"
 #include "interact/tools/explore_tool.hpp"
@@ -137,6 +138,9 @@ class Panels {
   void view_panel(GuiModel& model, float fps);
   void scene_panel(GuiModel& model);
   void simulation_panel(GuiModel& model);
+  void physics_settings(GuiModel& model, const SceneStatus& st);
+  void hand_settings(GuiModel& model, const SceneStatus& st);
+  void simulation_status(GuiModel& model, const SceneStatus& st);
   void scenario_banner(GuiModel& model);
   void ribbon_panel(GuiModel& model);
   void history_panel(GuiModel& model);
@@ -168,6 +172,9 @@ Scene scene_to_save(GuiModel& model);
 // F and View > Frame all: every object in the view (the ball of their points, zoom 1, no pan);
 // frame_on: the objects of `only` (a knot from the table, an exercise's knots).
 void frame_all(GuiModel& model);
+
+// The recent sessions and files (the start page's), kept beside the window's autosave.
+RecentFiles recent_files(const GuiModel& model);
 void frame_on(GuiModel& model, const Scene& only);
 
 // The scenario's name and instruction, or the scene's, for the band above the view; and how many

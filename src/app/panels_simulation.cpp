@@ -101,6 +101,15 @@ void Panels::simulation_panel(GuiModel& model) {
     ImGui::TextDisabled("drag a strand: an isotopy (Alt: along the depth)");
   }
 
+  physics_settings(model, st);
+  hand_settings(model, st);
+  simulation_status(model, st);
+  model.dock.end();
+}
+
+// The World's physics, edited live: each whole change one undoable step, sent at most every 150 ms.
+void Panels::physics_settings(GuiModel& model, const SceneStatus& st) {
+  Session& session = model.session;
   ImGui::Separator();
   ImGui::TextUnformatted("Physics (applied live)");
   PhysicsSettings& p = model.scene().physics;
@@ -173,6 +182,12 @@ void Panels::simulation_panel(GuiModel& model) {
   }
   if (st.message[0]) ImGui::TextColored(ImVec4(1, 0.55f, 0.3f, 1), "%s", st.message);
 
+}
+
+// The hand: the loop's live parameters, the Touch tool's carry, the pins.
+void Panels::hand_settings(GuiModel& model, const SceneStatus& st) {
+  Session& session = model.session;
+  const HapticSnapshot* snap = session.snapshot();
   ImGui::Separator();
   ImGui::TextUnformatted("Hand");
   if (snap) {
@@ -223,6 +238,11 @@ void Panels::simulation_panel(GuiModel& model) {
     ImGui::Text("holding vertex %d %s: %.2f N", st.held_vertex,
                 st.grab_mode == 1 ? (session.dimension() == 3 ? "(along the depth)" : "(along w)") : "", st.band_force);
 
+}
+
+// What the simulation is doing: its clock and rate, contacts, and the independent checks.
+void Panels::simulation_status(GuiModel& model, const SceneStatus& st) {
+  Session& session = model.session;
   ImGui::Separator();
   const SimulationRates r = session.rates();
   ImGui::Text("t = %s, %lld steps (%s)", seconds(st.sim_time).c_str(), static_cast<long long>(st.sim_steps),
@@ -243,7 +263,6 @@ void Panels::simulation_panel(GuiModel& model) {
   } else {
     ImGui::TextDisabled("checking...");
   }
-  model.dock.end();
 }
 
 // [SECTION] Scenario banner

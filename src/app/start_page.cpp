@@ -61,8 +61,6 @@ void open_empty(GuiModel& model) {
 
 }  // namespace
 
-void open_from_start(GuiModel& model, const std::string& spec) { Panels::open(model, spec); }
-
 StartPage::~StartPage() {
   for (const Example& e : examples_)
     if (e.texture) glDeleteTextures(1, &e.texture);
@@ -170,7 +168,7 @@ void StartPage::draw_examples(GuiModel& model) {
     ImGui::PopTextWrapPos();
     ImGui::PopID();
     ImGui::EndGroup();
-    if (open) open_from_start(model, e.file.string());
+    if (open) Panels::open(model, e.file.string());
   }
 }
 
@@ -180,7 +178,7 @@ void StartPage::draw_starts(GuiModel& model) {
   ImGui::Separator();
   ImGui::BeginGroup();
   title("Knot exercises (the paper's user study)");
-  if (page_button(model, "Untangle the unknot (Fig. 15)")) open_from_start(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
+  if (page_button(model, "Untangle the unknot (Fig. 15)")) Panels::open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
   if (page_button(model, "Are these the same knot?")) {
     open_empty(model);
     model.open_same_knot = true;
@@ -201,8 +199,8 @@ void StartPage::draw_starts(GuiModel& model) {
     open_empty(model);
     model.choose(ToolChoice::kSketchRibbon);
   }
-  if (page_button(model, "The spun trefoil")) open_from_start(model, std::string(S4D_SCENES_DIR) + "/spun-trefoil.json");
-  if (page_button(model, "The Clifford torus")) open_from_start(model, "clifford-torus");
+  if (page_button(model, "The spun trefoil")) Panels::open(model, std::string(S4D_SCENES_DIR) + "/spun-trefoil.json");
+  if (page_button(model, "The Clifford torus")) Panels::open(model, "clifford-torus");
   if (page_button(model, "Open a file...")) model.open_file_dialog = true;
   ImGui::EndGroup();
   ImGui::SameLine(2 * col);
@@ -210,7 +208,7 @@ void StartPage::draw_starts(GuiModel& model) {
   title("Recent sessions and files");
   if (recent_.empty()) ImGui::TextDisabled("(no session or file opened yet)");
   for (const std::filesystem::path& p : recent_) {
-    if (page_button(model, p.filename().string().c_str())) open_from_start(model, p.string());
+    if (page_button(model, p.filename().string().c_str())) Panels::open(model, p.string());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.string().c_str());
   }
   ImGui::EndGroup();

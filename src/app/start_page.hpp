@@ -42,7 +42,4 @@ class StartPage {
   std::vector<std::filesystem::path> recent_;
 };
 
-// Opens `spec` from the start page (or anywhere): the document replaces the page.
-void open_from_start(GuiModel& model, const std::string& spec);
-
 }  // namespace s4d

@@ -85,6 +85,18 @@ void on_char(GLFWwindow* w, unsigned int c) {
 void on_focus(GLFWwindow* w, int focused) { ImGui_ImplGlfw_WindowFocusCallback(w, focused); }
 void on_enter(GLFWwindow* w, int entered) { ImGui_ImplGlfw_CursorEnterCallback(w, entered); }
 
+// A pointer event's optional trailing "DX DY" in pixels (none: no offset).
+template <typename Fail>
+Vec2 optional_offset(std::istringstream& ls, const std::string& word, const Fail& fail) {
+  double dx = 0, dy = 0;
+  if (!(ls >> dx)) {
+    ls.clear();
+    return Vec2::Zero();
+  }
+  if (!(ls >> dy) || !std::isfinite(dx) || !std::isfinite(dy)) fail(word + "'s offset needs two finite pixel numbers");
+  return Vec2(dx, dy);
+}
+
 }  // namespace
 
 std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
@@ -127,28 +139,16 @@ std::vector<InputEvent> read_input_file(const std::filesystem::path& path) {
       e.kind = InputEvent::Kind::move_view;
       e.at = Vec2(x, y);
     } else if (word == "move-to-hint") {
-      double dx = 0, dy = 0;
       if (!(ls >> e.vertex) || e.vertex < 1) fail("move-to-hint needs a marker number (1 or more)");
       if (!(ls >> e.text) || (e.text != "marker" && e.text != "target")) fail("move-to-hint N needs marker or target");
-      if (ls >> dx) {
-        if (!(ls >> dy) || !std::isfinite(dx) || !std::isfinite(dy)) fail("move-to-hint's offset needs two finite pixel numbers");
-      } else {
-        ls.clear();
-      }
       e.kind = InputEvent::Kind::move_to_hint;
-      e.at = Vec2(dx, dy);
+      e.at = optional_offset(ls, word, fail);
     } else if (word == "move-to-vertex") {
       // The pointer to where a simulated vertex is on the screen when the event plays (scripts
       // that follow a moving surface), offset by DX DY pixels.
-      double dx = 0, dy = 0;
       if (!(ls >> e.vertex) || e.vertex < 0) fail("move-to-vertex needs a vertex number (0 or more)");
-      if (ls >> dx) {
-        if (!(ls >> dy) || !std::isfinite(dx) || !std::isfinite(dy)) fail("move-to-vertex's offset needs two finite pixel numbers");
-      } else {
-        ls.clear();
-      }
       e.kind = InputEvent::Kind::move_to_vertex;
-      e.at = Vec2(dx, dy);
+      e.at = optional_offset(ls, word, fail);
     } else if (word == "press" || word == "release") {
       if (!(ls >> arg) || button_of(arg) < 0) fail(word + " needs left, right or middle");
       e.kind = word == "press" ? InputEvent::Kind::press : InputEvent::Kind::release;

@@ -88,7 +88,7 @@ class Core {
   // The requests for the World; the hand's, the view's and the sketch's stay on the haptic side
   // (LiveSimulation::command), which passes the rest on.
   void apply(const live::Request& r) {
-    std::visit([this](const auto& q) { on(q); }, r);
+    std::visit([this](const auto& q) { this->on(q); }, r);
   }
 
   // The World put in `s` (an undo, a restored session), paused there.

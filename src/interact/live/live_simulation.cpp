@@ -77,7 +77,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   // The one place a request is applied: the hand's, the view's and the sketch's here on the
   // loop's thread; the World's passed on to the core (on the physics thread when it has one).
   void command(const SceneCommand& c) override {
-    if (const live::Request* r = live::request(c)) std::visit([this](const auto& q) { on(q); }, *r);
+    if (const live::Request* r = live::request(c)) std::visit([this](const auto& q) { this->on(q); }, *r);
   }
 
   ToolOutput step(const DeviceState& device, double dt) override {
