@@ -13,6 +13,8 @@ if [[ "${1:-build}" == test ]]; then
   # clang and its sanitizer and libFuzzer runtimes for the checked builds; llvm for the
   # symbolizer that puts file:line into their reports.
   packages+=(xvfb xauth libfcl-dev libbullet-dev clang libclang-rt-14-dev llvm)
+  # The package test checks the .desktop entry and the .s4d MIME type as the desktop reads them.
+  packages+=(desktop-file-utils shared-mime-info)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -28,7 +28,9 @@ phase "release: tests" ctest --preset release -j"$jobs"
 
 # ASan + UBSan: the whole suite but the window (the asan preset builds no GUI: the app's window
 # runs Mesa through GLX under Xvfb, uninstrumented and half a minute even in release; the app's
-# logic below the window is in the interact and render tests, which run).
+# logic below the window is in the interact and render tests, which run). Nor the package tests
+# (label package: an instrumented program without its window is not what is packaged; the release
+# suite makes and runs the .deb).
 # The preset also leaves out six brute-force tests that take 75-135 s each instrumented (1-3 s in
 # release): ClosestPoints.RandomAndDegenerateConfigurationsInR2/3/4, the spun trefoil's
 # self-intersection check at its two finest resolutions, TrefoilRibbon.TooWideAWidth... and

@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "core/plane.hpp"
 #include "demo_report.hpp"
@@ -20,13 +21,6 @@
 #include "scenario/scenario_run.hpp"
 #include "view_options.hpp"
 
-#ifndef S4D_SCENES_DIR
-#define S4D_SCENES_DIR "scenes"
-#endif
-#ifndef S4D_SCENARIOS_DIR
-#define S4D_SCENARIOS_DIR S4D_SCENES_DIR "/../scenarios"
-#endif
-
 namespace s4d::cli {
 namespace {
 
@@ -34,8 +28,8 @@ namespace fs = std::filesystem;
 
 struct DemoArgs {
   std::string out = "shadow4d-demo";
-  std::string scenes = S4D_SCENES_DIR;
-  std::string scenarios = fs::path(S4D_SCENARIOS_DIR).lexically_normal().string();
+  std::string scenes;     // empty: the program's examples (core/data_paths.hpp)
+  std::string scenarios;  // the same
   std::string frame_size = "320x240";
   ViewOptions view;
 };
@@ -190,20 +184,22 @@ const CommandRegistrar kDemo(
       auto args = std::make_shared<DemoArgs>();
       args->view.size = "800x600";
       sub.add_option("--out,-o", args->out, "folder for the PNG files")->capture_default_str();
-      sub.add_option("--scenes", args->scenes, "folder holding the scene files")->capture_default_str();
-      sub.add_option("--scenarios", args->scenarios, "folder holding the scenario files")
-          ->capture_default_str();
+      sub.add_option("--scenes", args->scenes, "folder holding the scene files (default: the installed examples)");
+      sub.add_option("--scenarios", args->scenarios,
+                     "folder holding the scenario files (default: the installed examples)");
       sub.add_option("--frame-size", args->frame_size,
                      "size WxH of each frame of the experiments' contact sheets")
           ->capture_default_str();
       args->view.add_to(sub);
       sub.callback([args] {
+        const fs::path scenes = args->scenes.empty() ? data_dirs().scenes : fs::path(args->scenes);
+        const fs::path scenarios = args->scenarios.empty() ? data_dirs().scenarios : fs::path(args->scenarios);
         fs::create_directories(args->out);
         const auto [w, h] = args->view.parsed_size();
         const auto [fw, fh] = parse_frame_size(args->frame_size);
         int failures = 0;
         for (const char* name : kDemoScenes) {
-          const fs::path scene_path = fs::path(args->scenes) / (std::string(name) + ".json");
+          const fs::path scene_path = scenes / (std::string(name) + ".json");
           const fs::path png = fs::path(args->out) / (std::string(name) + ".png");
           try {
             Scene scene = load_scene(scene_path);
@@ -224,7 +220,7 @@ const CommandRegistrar kDemo(
           const fs::path png = fs::path(args->out) / x.sheet;
           try {
             const ExperimentResult r = run_experiment(
-                x, fs::path(args->scenarios) / (std::string(x.scenario) + ".json"), args->view, fw, fh);
+                x, scenarios / (std::string(x.scenario) + ".json"), args->view, fw, fh);
             write_png(r.sheet, png);
             std::cout << png.string() << "\n  " << x.scenario << " (paper " << x.figure
                       << "): " << kSheetFrames << " frames of " << fw << "x" << fh << " over "

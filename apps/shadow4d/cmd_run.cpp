@@ -11,6 +11,7 @@
 
 #include "command.hpp"
 #include "demo_report.hpp"
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "core/plane.hpp"
 #include "io/image.hpp"
@@ -34,8 +35,16 @@ struct RunArgs {
 
 Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 
+// The scenario's file as given, else an example by path or by name ("spun-trefoil-tighten").
+fs::path scenario_file(const std::string& spec) {
+  const fs::path found = find_example(spec);
+  if (fs::path(spec).has_extension() || fs::exists(found)) return found;
+  const fs::path named = find_example(spec + ".json");
+  return fs::exists(named) ? named : found;
+}
+
 void run(const RunArgs& args) {
-  const Scenario sc = load_scenario(args.scenario);
+  const Scenario sc = load_scenario(scenario_file(args.scenario));
   const auto run = ScenarioRun::make(sc);
   const int frames = args.frames > 0 ? args.frames : sc.frames;
   const fs::path out = args.out;
@@ -127,7 +136,9 @@ const CommandRegistrar kRun(
     "run", "run a physics scenario (scenarios/*.json): PNG frames, final meshes, metrics, verdict",
     [](CLI::App& sub) {
       auto args = std::make_shared<RunArgs>();
-      sub.add_option("scenario", args->scenario, "scenario file (see scenarios/)")->required();
+      sub.add_option("scenario", args->scenario,
+                     "scenario file, or the name of an installed one (spun-trefoil-tighten)")
+          ->required();
       sub.add_option("--out,-o", args->out, "output directory (frames, final meshes, metrics.json)");
       sub.add_option("--frames", args->frames, "frames to save (default: the scenario's)")
           ->check(CLI::Range(1, 1000));

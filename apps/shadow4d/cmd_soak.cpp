@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "command.hpp"
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "haptics/trajectory_file.hpp"
 #include "interact/session/autosave.hpp"
@@ -26,10 +27,6 @@
 #include "interact/tools/view_edit.hpp"
 #include "shape/mesh_checks.hpp"
 
-#ifndef S4D_SCENES_DIR
-#define S4D_SCENES_DIR "scenes"
-#endif
-
 namespace s4d::cli {
 namespace {
 
@@ -38,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 
 struct SoakArgs {
   double minutes = 1;
-  std::string scenarios = S4D_SCENES_DIR "/../scenarios";
+  std::string scenarios;  // empty: the program's examples (core/data_paths.hpp)
   std::string out;  // folder for the replay files and autosaves; empty: a temporary one
   unsigned seed = 1;
   bool json = false;
@@ -313,11 +310,13 @@ void soak_knots(double seconds, std::mt19937& rng, Totals& t) {
 void soak(const SoakArgs& a) {
   const fs::path dir = a.out.empty() ? fs::temp_directory_path() / "shadow4d-soak" : fs::path(a.out);
   fs::create_directories(dir);
+  const fs::path folder = a.scenarios.empty() ? data_dirs().scenarios : fs::path(a.scenarios);
   std::vector<fs::path> scenarios;
-  for (const auto& e : fs::directory_iterator(a.scenarios))
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(folder, ec))
     if (e.path().extension() == ".json") scenarios.push_back(e.path());
   std::sort(scenarios.begin(), scenarios.end());
-  if (scenarios.empty()) throw Error("no scenarios in " + a.scenarios + " (give --scenarios DIR)");
+  if (scenarios.empty()) throw Error("no scenarios in " + folder.string() + " (give --scenarios DIR)");
   std::mt19937 rng(a.seed);
   Totals t;
   const double total = a.minutes * 60;
@@ -381,7 +380,7 @@ const CommandRegistrar kSoak(
     [](CLI::App& sub) {
       auto a = std::make_shared<SoakArgs>();
       sub.add_option("--minutes", a->minutes, "how long")->check(CLI::Range(0.05, 1e4));
-      sub.add_option("--scenarios", a->scenarios, "folder of scenario files");
+      sub.add_option("--scenarios", a->scenarios, "folder of scenario files (default: the installed examples)");
       sub.add_option("--out", a->out, "folder for the replay files and autosaves");
       sub.add_option("--seed", a->seed, "of the random use");
       sub.add_flag("--json", a->json, "the report as JSON");

@@ -4,8 +4,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
+#include <string>
 
 #include "command.hpp"
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "gui_launch.hpp"
 
@@ -50,6 +53,13 @@ int main(int argc, char** argv) {
   app.add_option(
       "--device", gui.device,
       "GUI: the haptic loop's device: mouse (default), sim, replay:FILE, spacenav, openhaptics");
+  // The version, and where the data was found: an installed program names its own share folder.
+  app.set_version_flag("--version", [] {
+    std::string why;
+    const std::optional<s4d::DataDirs> d = s4d::try_data_dirs(&why);
+    return std::string("shadow4d " S4D_VERSION "\ndata: ") +
+           (d ? d->root.string() + " (" + d->found_by + ")" : "not found: " + why);
+  });
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "log more");
   s4d::cli::add_registered_commands(app);

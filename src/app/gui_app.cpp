@@ -458,7 +458,7 @@ class GuiApp {
     const Rect& view = model_.layout.view;
     panels_.draw(model_, ImGui::GetIO().Framerate);
     if (model_.start_page) {
-      if (!start_loaded_) start_page_.load(S4D_SCENARIOS_DIR, recent_files(model_));
+      if (!start_loaded_) start_page_.load(example_folder(model_, &DataDirs::scenarios), recent_files(model_));
       start_loaded_ = true;
       start_page_.draw(model_);
       status_line(model_);

@@ -78,6 +78,13 @@ RecentFiles recent_files(const GuiModel& model) {
   return RecentFiles(std::filesystem::path(model.autosave_path).parent_path() / "recent.txt");
 }
 
+std::filesystem::path example_folder(GuiModel& model, std::filesystem::path DataDirs::*folder) {
+  std::string why;
+  if (const std::optional<DataDirs> d = try_data_dirs(&why)) return (*d).*folder;
+  model.status = why;
+  return ".";
+}
+
 void Panels::open(GuiModel& model, const std::string& spec) {
   try {
     if (spec.size() > 4 && spec.ends_with(".s4d")) {
@@ -187,7 +194,7 @@ void Panels::exercise_scene(GuiModel& model) {
 void Panels::draw(GuiModel& model, float fps) {
   menu_bar(model);
   exercise_scene(model);
-  if (std::exchange(model.open_file_dialog, false)) open_browser_.open(S4D_SCENES_DIR);
+  if (std::exchange(model.open_file_dialog, false)) open_browser_.open(example_folder(model, &DataDirs::scenes));
   if (model.start_page) {  // the page is drawn by the window; only the menus and dialogs here
     dialogs(model);
     return;
@@ -216,8 +223,8 @@ void Panels::menu_bar(GuiModel& model) {
     }
     if (ImGui::MenuItem("Start page", nullptr, model.start_page)) model.start_page = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's examples, the exercises, recent files, the keys");
-    if (ImGui::MenuItem("Open...")) open_browser_.open(S4D_SCENES_DIR);
-    if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(S4D_SCENARIOS_DIR);
+    if (ImGui::MenuItem("Open...")) open_browser_.open(example_folder(model, &DataDirs::scenes));
+    if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(example_folder(model, &DataDirs::scenarios));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
     if (ImGui::MenuItem("Save session...")) session_browser_.open(".");
@@ -291,7 +298,7 @@ void Panels::menu_bar(GuiModel& model) {
   }
   if (ImGui::BeginMenu("Exercises")) {
     if (ImGui::MenuItem("Untangle the unknot (Fig. 15)"))
-      open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
+      open(model, (example_folder(model, &DataDirs::scenes) / "fig15-tangled-unknot.json").string());
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("a tangled curve that is the unknot: show it by dragging strands (Alt: along the depth)\n"
                         "until its picture has no crossing; a drag never changes the knot\n"

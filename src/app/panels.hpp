@@ -17,6 +17,7 @@
 #include "io/recent_files.hpp"
 #include "app/view_state.hpp"
 #include "audio/audio_player.hpp"
+#include "core/data_paths.hpp"
 #include "interact/tools/explore_tool.hpp"
 #include "interact/tools/grab_tool.hpp"
 #include "interact/tools/knot_sketch_tool.hpp"
@@ -175,6 +176,10 @@ void frame_all(GuiModel& model);
 
 // The recent sessions and files (the start page's), kept beside the window's autosave.
 RecentFiles recent_files(const GuiModel& model);
+// The example scenes or scenarios of the program's data (core/data_paths.hpp), e.g.
+// example_folder(model, &DataDirs::scenes); the working folder, the reason in the status line,
+// when the data cannot be found.
+std::filesystem::path example_folder(GuiModel& model, std::filesystem::path DataDirs::*folder);
 void frame_on(GuiModel& model, const Scene& only);
 
 // The scenario's name and instruction, or the scene's, for the band above the view; and how many

@@ -178,7 +178,7 @@ void StartPage::draw_starts(GuiModel& model) {
   ImGui::Separator();
   ImGui::BeginGroup();
   title("Knot exercises (the paper's user study)");
-  if (page_button(model, "Untangle the unknot (Fig. 15)")) Panels::open(model, std::string(S4D_SCENES_DIR) + "/fig15-tangled-unknot.json");
+  if (page_button(model, "Untangle the unknot (Fig. 15)")) Panels::open(model, (example_folder(model, &DataDirs::scenes) / "fig15-tangled-unknot.json").string());
   if (page_button(model, "Are these the same knot?")) {
     open_empty(model);
     model.open_same_knot = true;
@@ -199,7 +199,7 @@ void StartPage::draw_starts(GuiModel& model) {
     open_empty(model);
     model.choose(ToolChoice::kSketchRibbon);
   }
-  if (page_button(model, "The spun trefoil")) Panels::open(model, std::string(S4D_SCENES_DIR) + "/spun-trefoil.json");
+  if (page_button(model, "The spun trefoil")) Panels::open(model, (example_folder(model, &DataDirs::scenes) / "spun-trefoil.json").string());
   if (page_button(model, "The Clifford torus")) Panels::open(model, "clifford-torus");
   if (page_button(model, "Open a file...")) model.open_file_dialog = true;
   ImGui::EndGroup();

@@ -1,11 +1,13 @@
 // load_object / load_scene_or_object: what the CLI and the GUI's "Open" accept — a scene, an
 // object file, or a generator call such as "spun-trefoil:n=48", either placed by "@x,y,z[,w]".
+// A file missing from the working folder is looked for among the examples (find_example).
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <optional>
 
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "io/object_file.hpp"
 #include "io/scene.hpp"
@@ -21,11 +23,11 @@ std::string lower(std::string s) {
 
 SceneObject load_unplaced_object(const std::string& spec) {
   if (spec.empty()) throw Error("empty object name: give a file or a generator such as clifford-torus");
-  const std::filesystem::path path(spec);
   std::error_code ec;
   SceneObject o;
   // A stray file named "chain" in the working folder must not hide the generator of that name.
   const bool generator_name = find_generator(spec.substr(0, spec.find(':'))) != nullptr;
+  const std::filesystem::path path = generator_name ? std::filesystem::path(spec) : find_example(spec);
   if (std::filesystem::is_regular_file(path, ec) && (is_shape_file_extension(path) || !generator_name)) {
     o.shape = read_shape_file(path);
     o.source_path = path.lexically_normal().string();
@@ -80,7 +82,7 @@ SceneObject load_object(const std::string& full_spec) {
 }
 
 Scene load_scene_or_object(const std::string& spec) {
-  if (lower(std::filesystem::path(spec).extension().string()) == ".json") return load_scene(spec);
+  if (lower(std::filesystem::path(spec).extension().string()) == ".json") return load_scene(find_example(spec));
   Scene scene;
   scene.objects.push_back(load_object(spec));
   return scene;

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 
 namespace s4d {
@@ -108,13 +109,7 @@ KnotIndex KnotIndex::load(const std::filesystem::path& path) {
 
 std::filesystem::path KnotIndex::shipped_path() {
   if (const char* env = std::getenv("S4D_KNOT_INDEX"); env && *env) return env;
-#ifdef S4D_KNOT_DATA_DIR
-  return std::filesystem::path(S4D_KNOT_DATA_DIR) / "knot_index.tsv";
-#else
-  // This file lives in src/knots/ of the source tree; the data sits in data/knots/ beside src/.
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "data" /
-         "knots" / "knot_index.tsv";
-#endif
+  return data_dirs().knots / "knot_index.tsv";
 }
 
 const KnotIndex& KnotIndex::shipped() {

@@ -35,8 +35,8 @@ class KnotIndex {
   // Factors of composite knots are searched among entries up to this many crossings.
   static constexpr int kFactorCrossings = 10;
 
-  // The index shipped with the program: $S4D_KNOT_INDEX if set, else data/knots/knot_index.tsv of
-  // the source tree. Loaded once (thread-safe); throws Error if missing or malformed.
+  // The index shipped with the program: $S4D_KNOT_INDEX if set, else knot_index.tsv of the data
+  // folder (core/data_paths.hpp). Loaded once (thread-safe); throws Error if missing or malformed.
   static const KnotIndex& shipped();
   static std::filesystem::path shipped_path();
   // Reads an index file; throws ParseError with file and line on malformed lines.

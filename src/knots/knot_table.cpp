@@ -9,6 +9,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "knots/braid_closure.hpp"
 #include "knots/regina_link.hpp"
@@ -22,7 +23,7 @@ namespace {
 
 const std::vector<BraidWord>& rolfsen_braids() {
   static const std::vector<BraidWord> table =
-      load_braid_table((KnotIndex::shipped_path().parent_path() / "rolfsen_braids.txt").string());
+      load_braid_table((data_dirs().knots / "rolfsen_braids.txt").string());
   return table;
 }
 

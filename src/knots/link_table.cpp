@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "knots/knot_index.hpp"
 
@@ -142,7 +143,7 @@ LinkTable LinkTable::load(const std::filesystem::path& path) {
 
 std::filesystem::path LinkTable::shipped_path() {
   if (const char* env = std::getenv("S4D_LINK_TABLE"); env && *env) return env;
-  return KnotIndex::shipped_path().parent_path() / "link_table.tsv";
+  return data_dirs().knots / "link_table.tsv";
 }
 
 const LinkTable& LinkTable::shipped() {

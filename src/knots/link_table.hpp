@@ -41,8 +41,8 @@ struct LinkMatch {
 
 class LinkTable {
  public:
-  // The table shipped with the program: $S4D_LINK_TABLE if set, else data/knots/link_table.tsv of
-  // the source tree. Loaded once (thread-safe); throws Error if missing or malformed.
+  // The table shipped with the program: $S4D_LINK_TABLE if set, else link_table.tsv of the data
+  // folder (core/data_paths.hpp). Loaded once (thread-safe); throws Error if missing or malformed.
   static const LinkTable& shipped();
   static std::filesystem::path shipped_path();
   static LinkTable load(const std::filesystem::path& path);
