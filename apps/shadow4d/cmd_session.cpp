@@ -57,21 +57,25 @@ void run(const RunArgs& a) {
   SessionOptions o;
   o.device = a.device;
   Autosaver autosaver({a.autosave, a.interval, 3});
-  std::string why;
   if (a.restore) {
-    if (auto saved = unfinished_autosave(autosaver.path(), &why)) {
+    // The work of a run that is no longer running, as the slot was claimed (read once, there).
+    if (const auto& saved = autosaver.unfinished()) {
       session.open_saved(*saved, saved->opened, o);
       std::cout << "restored " << autosaver.path().string() << " saved at " << when(saved->saved_at) << " ("
                 << saved->simulation.positions.size() / std::max(1, saved->simulation.dim) << " vertices, t = "
                 << saved->simulation.time << " s)" << std::endl;
-    } else if (!why.empty()) {
-      std::cout << why << "; starting afresh" << std::endl;
+    } else if (!autosaver.note().empty()) {
+      std::cout << autosaver.note() << "; starting afresh" << std::endl;
     }
   }
   if (!session.simulating() && session.document().spec.empty()) session.open(load_document(a.input), o);
   if (!session.simulating())
     throw Error("nothing to simulate: " + (session.physics_error().empty() ? std::string("no surface") : session.physics_error()));
   session.send(live::Play{});
+  // When the work begins (a restore of a large history takes a while): what a kill can lose is
+  // what was done since then or since the last autosave, whichever is later.
+  std::cout << "running from " << when(std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count())
+            << std::endl;
   std::mt19937 rng(a.seed);
   const auto t0 = std::chrono::steady_clock::now();
   auto next_edit = t0;

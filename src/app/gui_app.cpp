@@ -212,10 +212,11 @@ class GuiApp {
   // process exit code.
   int run() {
     for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
-      if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, kept to be offered back
-        std::cerr << "shadow4d: signal " << stop_signal() << ": closing, the work autosaved to " << autosaver_.path().string()
-                  << "\n";
-        if (!model_.pending_restore && options_.autosave_seconds > 0) autosaver_.save_now(model_.session, false);
+      if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, marked unfinished to be offered back
+        const bool save = !model_.pending_restore && options_.autosave_seconds > 0;
+        if (save) autosaver_.save_now(model_.session, false, signal_name(stop_signal()));
+        std::cerr << "shadow4d: " << signal_name(stop_signal()) << ": the window closed"
+                  << (save ? "; its work is in " + autosaver_.path().string() : std::string()) << "\n";
         model_.session.close();
         return exit_code_;
       }
@@ -294,17 +295,19 @@ class GuiApp {
   }
 
   // A run that did not quit normally left an autosave: offered (or, with --restore, taken up).
+  // Only the work of windows no longer running: the slot this window claimed (autosave.hpp).
   void offer_unfinished_autosave() {
     model_.autosave_path = autosaver_.path().string();
-    std::string why;
-    if (auto saved = unfinished_autosave(autosaver_.path(), &why)) {
+    if (const auto& saved = autosaver_.unfinished()) {
       if (options_.restore) Panels::open_session(model_, *saved, autosaver_.path().string());
-      else model_.pending_restore = std::move(saved);
-    } else if (!why.empty()) {
-      model_.status = why;
+      else model_.pending_restore = saved;
+    } else if (!autosaver_.note().empty()) {
+      model_.status = autosaver_.note();
     } else if (options_.restore) {
-      model_.status = "nothing to restore: the last run quit normally (" + autosaver_.path().string() + ")";
+      model_.status = "nothing to restore: no window left unfinished work (autosave: " + autosaver_.path().string() + ")";
     }
+    if (const int more = autosaver_.others_unfinished(); more > 0)
+      model_.status += "; " + std::to_string(more) + " more window(s) left unfinished work: each new window offers one";
   }
 
   // [SECTION] scripted commands

@@ -248,7 +248,7 @@ void Panels::menu_bar(GuiModel& model) {
     const std::string undo = h.can_undo() ? "Undo " + h.done_labels().back() : "Undo";
     const std::string redo = h.can_redo() ? "Redo " + h.undone_labels().front() : "Redo";
     if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.can_undo() || model.knot.busy())) undo_or_redo(model, false);
-    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.can_redo())) undo_or_redo(model, true);
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z, Ctrl+Y", false, h.can_redo())) undo_or_redo(model, true);
     ImGui::MenuItem("History", nullptr, &model.show_history);
     ImGui::EndMenu();
   }

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "app/panel_settings.hpp"
+#include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/object_file.hpp"
 #include "scenario/world_builder.hpp"
@@ -378,8 +379,10 @@ void Panels::restore_dialog(GuiModel& model) {
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::Begin("Restore your work?", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
   const SessionFile& f = *model.pending_restore;
-  const double ago = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count() - f.saved_at;
-  ImGui::Text("The last run did not quit normally. Its autosave (from '%s', %.0f s ago) holds", f.opened.c_str(), ago);
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+  ImGui::TextWrapped("A window that is no longer running left unfinished work: %s.",
+                     describe_unfinished(model.autosave_path, f).c_str());
+  ImGui::PopTextWrapPos();
   ImGui::Text("%zu object(s) and %d step(s) of work.", f.scene.objects.size(), f.history_head);
   if (ImGui::Button("Restore")) {
     const SessionFile saved = *model.pending_restore;

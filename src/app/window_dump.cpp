@@ -188,6 +188,10 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hin
   knots.dump(knot_panels);
   j["knot_panels"] = knot_panels;
   j["restore_offered"] = model.pending_restore.has_value();
+  j["autosave"] = model.autosave_path;  // this window's own (its slot)
+  if (model.pending_restore)
+    j["restore_offer"] = {{"opened", model.pending_restore->opened}, {"saved_at", model.pending_restore->saved_at},
+                          {"closed_by", model.pending_restore->closed_by}};
   j["history"] = model.session.history().done_labels();
   std::ofstream out(path);
   out << j.dump(1) << "\n";

@@ -26,4 +26,13 @@ void install_stop_signals() {
 bool stop_requested() { return g_signal != 0; }
 int stop_signal() { return g_signal; }
 
+std::string signal_name(int signal) {
+  switch (signal) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    default: return "signal " + std::to_string(signal);
+  }
+}
+
 }  // namespace s4d

@@ -2,6 +2,7 @@
 // terminal ends a long-running loop cleanly (the window writes its last autosave) instead of being
 // ignored or killing it mid-write. The handler only sets a flag the loop polls.
 #pragma once
+#include <string>
 
 namespace s4d {
 
@@ -11,5 +12,7 @@ void install_stop_signals();
 // Whether one of the signals arrived; which one (0: none).
 bool stop_requested();
 int stop_signal();
+// "SIGINT", "SIGTERM", "SIGHUP", or "signal N": for messages and the autosave's closed_by.
+std::string signal_name(int signal);
 
 }  // namespace s4d

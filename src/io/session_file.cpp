@@ -1,5 +1,6 @@
 // The session's JSON: {"shadow4d_session": version, "scene": {...}, "simulation": {...},
-// "view": {...}, "tool", "tool_settings": {...}, "history": [...], "history_head", "clean_exit"}.
+// "view": {...}, "tool", "tool_settings": {...}, "history": [...], "history_head",
+// "history_states": [...], "clean_exit", "closed_by", "saved_at"}.
 #include "io/session_file.hpp"
 
 #include <cmath>
@@ -35,9 +36,111 @@ struct Ctx {
   }
 };
 
+Json quaternion_json(const Eigen::Quaterniond& q) { return {q.w(), q.x(), q.y(), q.z()}; }
+
+Eigen::Quaterniond parse_quaternion(const Ctx& c, const Json& j, const std::string& where) {
+  const auto t = c.numbers(j, where);
+  if (t.size() != 4 || !(std::hypot(std::hypot(t[0], t[1]), std::hypot(t[2], t[3])) > 1e-9))
+    c.fail(where, "must be a non-zero quaternion [w, x, y, z]");
+  return Eigen::Quaterniond(t[0], t[1], t[2], t[3]).normalized();
+}
+
+std::array<float, 6> parse_angles(const Ctx& c, const Json& j, const std::string& where) {
+  const auto a = c.numbers(j, where);
+  if (a.size() != 6) c.fail(where, "must be 6 angles (xy xz xw yz yw zw)");
+  std::array<float, 6> out{};
+  for (std::size_t i = 0; i < 6; ++i) out[i] = static_cast<float>(a[i]);
+  return out;
+}
+
+std::map<std::string, double> parse_settings(const Ctx& c, const Json& j, const std::string& where) {
+  if (!j.is_object()) c.fail(where, "must be an object of named numbers");
+  std::map<std::string, double> out;
+  for (const auto& [k, v] : j.items()) out[k] = c.number(v, where + "." + k);
+  return out;
+}
+
+Json settings_json(const std::map<std::string, double>& settings) {
+  Json j = Json::object();
+  for (const auto& [k, v] : settings)
+    if (std::isfinite(v)) j[k] = v;
+  return j;
+}
+
+// One undo step's document: its scene inline, as the session's own.
+Json state_json(const DocumentState& d) {
+  return {{"scene", Json::parse(scene_text(d.scene, "session.s4d", ObjectStorage::kInline))},
+          {"pinned", d.pinned},
+          {"angles", d.angles},
+          {"trackball", quaternion_json(d.trackball)},
+          {"zoom", d.zoom},
+          {"settings", settings_json(d.settings)}};
+}
+
+std::shared_ptr<const DocumentState> parse_state(const Ctx& c, const Json& j, const std::string& where,
+                                                 const std::filesystem::path& origin) {
+  if (!j.is_object()) c.fail(where, "must be an object");
+  for (const auto& [k, v] : j.items())
+    if (k != "scene" && k != "pinned" && k != "angles" && k != "trackball" && k != "zoom" && k != "settings")
+      c.fail(where + "." + k, "unknown key");
+  auto d = std::make_shared<DocumentState>();
+  if (!j.contains("scene") || !j["scene"].is_object()) c.fail(where + ".scene", "missing");
+  try {
+    d->scene = parse_scene(j["scene"].dump(), origin);
+  } catch (const ParseError& e) {  // said again with which step's scene it is
+    std::string what = e.what();
+    if (what.rfind(c.file + ":", 0) == 0) what.erase(0, c.file.size() + 1);
+    while (!what.empty() && what.front() == ' ') what.erase(0, 1);
+    c.fail(where + ".scene", what);
+  }
+  for (double v : c.numbers(j.value("pinned", Json::array()), where + ".pinned")) {
+    if (v < 0 || v > 1e9 || v != std::floor(v)) c.fail(where + ".pinned", "vertex " + format_double(v) + " is no vertex");
+    d->pinned.push_back(static_cast<int>(v));
+  }
+  d->angles = parse_angles(c, j.value("angles", Json::array({0, 0, 0, 0, 0, 0})), where + ".angles");
+  d->trackball = parse_quaternion(c, j.value("trackball", Json::array({1, 0, 0, 0})), where + ".trackball");
+  d->zoom = c.number(j.value("zoom", Json(1)), where + ".zoom");
+  if (!(d->zoom > 0)) c.fail(where + ".zoom", "must be positive");
+  if (j.contains("settings")) d->settings = parse_settings(c, j["settings"], where + ".settings");
+  return d;
+}
+
 }  // namespace
 
-std::string session_text(const SessionFile& s) {
+std::size_t DocumentState::bytes() const {
+  std::size_t b = sizeof(DocumentState) + pinned.size() * sizeof(int) + scene.scenario.size();
+  for (const SceneObject& o : scene.objects) {
+    b += sizeof(SceneObject) + o.name.size();
+    std::visit([&](const auto& s) {
+      using T = std::decay_t<decltype(s)>;
+      if constexpr (std::is_same_v<T, Surface<T::kDim>>) {
+        b += s.vertices.size() * sizeof(s.vertices[0]) + s.triangles.size() * sizeof(Triangle);
+      } else {
+        for (const auto& c : s.components) b += c.points.size() * sizeof(c.points[0]) + sizeof(c);
+      }
+    }, o.shape);
+  }
+  return b;
+}
+
+const std::string& StateTextCache::text(const std::shared_ptr<const DocumentState>& state) {
+  Entry& e = texts_[state.get()];
+  const bool same = !e.state.owner_before(state) && !state.owner_before(e.state) && !e.state.expired();
+  if (!same || e.text.empty()) {
+    e.state = state;
+    e.text = state_json(*state).dump();
+  }
+  return e.text;
+}
+
+void StateTextCache::keep_only(const std::vector<std::shared_ptr<const DocumentState>>& live) {
+  std::map<const DocumentState*, Entry> kept;
+  for (const auto& s : live)
+    if (auto it = texts_.find(s.get()); it != texts_.end()) kept.insert(texts_.extract(it));
+  texts_ = std::move(kept);
+}
+
+std::string session_text(const SessionFile& s, StateTextCache* cache) {
   Json root;
   root["shadow4d_session"] = kSessionVersion;
   root["opened"] = s.opened;
@@ -49,19 +152,29 @@ std::string session_text(const SessionFile& s) {
   Json base = Json::array();
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) base.push_back(s.view.base_frame.matrix()(r, k));
-  const auto& q = s.view.trackball;
   root["view"] = {{"angles", s.view.angles}, {"base_frame", base},
-                  {"trackball", {q.w(), q.x(), q.y(), q.z()}}, {"zoom", s.view.zoom}};
+                  {"trackball", quaternion_json(s.view.trackball)}, {"zoom", s.view.zoom}};
   root["tool"] = s.tool;
-  root["tool_settings"] = Json::object();
-  for (const auto& [k, v] : s.tool_settings)
-    if (std::isfinite(v)) root["tool_settings"][k] = v;
+  root["tool_settings"] = settings_json(s.tool_settings);
   root["history"] = s.history;
   root["history_head"] = s.history_head;
   root["clean_exit"] = s.clean_exit;
+  if (!s.closed_by.empty()) root["closed_by"] = s.closed_by;
   root["saved_at"] = s.saved_at;
   try {
-    return root.dump(1) + "\n";
+    // The states last, and without indentation: they are most of the file, and read by no person.
+    std::string text = root.dump(1);
+    if (!s.history_states.empty() && s.history_states.size() == s.history.size()) {
+      text.pop_back();  // the closing brace
+      text += ",\n \"history_states\": [";
+      for (std::size_t i = 0; i < s.history_states.size(); ++i) {
+        text += i == 0 ? "\n  " : ",\n  ";
+        text += cache ? cache->text(s.history_states[i]) : state_json(*s.history_states[i]).dump();
+      }
+      text += "\n ]\n}";
+    }
+    if (cache) cache->keep_only(s.history_states);
+    return text + "\n";
   } catch (const Json::exception& e) {  // e.g. a name that is not UTF-8
     throw Error(std::string("cannot write the session: ") + e.what());
   }
@@ -83,7 +196,8 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (version < 1 || version != std::floor(version)) c.fail("shadow4d_session", "not a version number");
   for (const auto& [k, v] : root.items())
     if (k != "shadow4d_session" && k != "opened" && k != "scene" && k != "simulation" && k != "view" && k != "tool" &&
-        k != "tool_settings" && k != "history" && k != "history_head" && k != "clean_exit" && k != "saved_at")
+        k != "tool_settings" && k != "history" && k != "history_head" && k != "history_states" && k != "clean_exit" &&
+        k != "closed_by" && k != "saved_at")
       c.fail(k, "unknown key");
   SessionFile s;
   if (root.contains("opened")) {
@@ -127,9 +241,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (root.contains("view")) {
     const Json& j = root["view"];
     if (!j.is_object()) c.fail("view", "must be an object");
-    const auto a = c.numbers(j.value("angles", Json::array({0, 0, 0, 0, 0, 0})), "view.angles");
-    if (a.size() != 6) c.fail("view.angles", "must be 6 angles (xy xz xw yz yw zw)");
-    for (int i = 0; i < 6; ++i) s.view.angles[static_cast<std::size_t>(i)] = static_cast<float>(a[static_cast<std::size_t>(i)]);
+    s.view.angles = parse_angles(c, j.value("angles", Json::array({0, 0, 0, 0, 0, 0})), "view.angles");
     s.view.base_frame = s.scene.frame;  // version 1 wrote the composed frame alone
     if (j.contains("base_frame")) {
       const auto m = c.numbers(j["base_frame"], "view.base_frame");
@@ -138,10 +250,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
       for (int i = 0; i < 16; ++i) r(i / 4, i % 4) = m[static_cast<std::size_t>(i)];
       s.view.base_frame = Frame<4>(r);
     }
-    const auto t = c.numbers(j.value("trackball", Json::array({1, 0, 0, 0})), "view.trackball");
-    if (t.size() != 4 || !(std::hypot(std::hypot(t[0], t[1]), std::hypot(t[2], t[3])) > 1e-9))
-      c.fail("view.trackball", "must be a non-zero quaternion [w, x, y, z]");
-    s.view.trackball = Eigen::Quaterniond(t[0], t[1], t[2], t[3]).normalized();
+    s.view.trackball = parse_quaternion(c, j.value("trackball", Json::array({1, 0, 0, 0})), "view.trackball");
     s.view.zoom = c.number(j.value("zoom", Json(1)), "view.zoom");
     if (!(s.view.zoom > 0)) c.fail("view.zoom", "must be positive");
   }
@@ -149,11 +258,7 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     if (!root["tool"].is_string()) c.fail("tool", "must be a string");
     s.tool = root["tool"].get<std::string>();
   }
-  if (root.contains("tool_settings")) {
-    const Json& j = root["tool_settings"];
-    if (!j.is_object()) c.fail("tool_settings", "must be an object of named numbers");
-    for (const auto& [k, v] : j.items()) s.tool_settings[k] = c.number(v, "tool_settings." + k);
-  }
+  if (root.contains("tool_settings")) s.tool_settings = parse_settings(c, root["tool_settings"], "tool_settings");
   if (root.contains("history")) {
     if (!root["history"].is_array()) c.fail("history", "must be an array of labels");
     for (const Json& h : root["history"]) {
@@ -167,18 +272,31 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
   if (head < 0 || head > static_cast<double>(s.history.size()) || head != std::floor(head))
     c.fail("history_head", "is outside the history");
   s.history_head = static_cast<int>(head);
+  if (root.contains("history_states")) {
+    const Json& j = root["history_states"];
+    if (!j.is_array()) c.fail("history_states", "must be an array of states");
+    if (j.size() != s.history.size())
+      c.fail("history_states", "must hold one state per step of the history (" + std::to_string(s.history.size()) +
+                                   "), has " + std::to_string(j.size()));
+    for (std::size_t i = 0; i < j.size(); ++i)
+      s.history_states.push_back(parse_state(c, j[i], "history_states[" + std::to_string(i) + "]", origin));
+  }
   if (root.contains("saved_at")) s.saved_at = c.number(root["saved_at"], "saved_at");
   if (root.contains("clean_exit")) {
     if (!root["clean_exit"].is_boolean()) c.fail("clean_exit", "must be true or false");
     s.clean_exit = root["clean_exit"].get<bool>();
+  }
+  if (root.contains("closed_by")) {
+    if (!root["closed_by"].is_string()) c.fail("closed_by", "must be a string");
+    s.closed_by = root["closed_by"].get<std::string>();
   }
   return s;
 }
 
 SessionFile read_session(const std::filesystem::path& path) { return parse_session(read_text_file(path), path); }
 
-void write_session(const SessionFile& session, const std::filesystem::path& path, int keep) {
-  write_file_atomically(path, session_text(session), keep);
+void write_session(const SessionFile& session, const std::filesystem::path& path, int keep, StateTextCache* cache) {
+  write_file_atomically(path, session_text(session, cache), keep);
 }
 
 }  // namespace s4d

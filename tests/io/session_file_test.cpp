@@ -2,6 +2,8 @@
 // refused with the reason, and the write is atomic (the old file survives a failed write).
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <filesystem>
 #include <fstream>
 #include <sys/stat.h>
@@ -58,7 +60,18 @@ SessionFile sample() {
   s.tool = "Touch";
   s.history = {"drag vertex 5", "pin vertex 0", "pin vertex 3"};
   s.history_head = 2;
+  for (int i = 0; i < 3; ++i) {  // version 3: the states undo and redo restore
+    auto d = std::make_shared<DocumentState>();
+    d->scene.objects.push_back(knot);
+    std::get<Curve<3>>(d->scene.objects[0].shape).components[0].points[0].x() = i;
+    d->pinned = {i};
+    d->angles[2] = 10.0f * i;
+    d->zoom = 1 + i;
+    d->settings["ribbon.width"] = 0.1 * (i + 1);
+    s.history_states.push_back(std::move(d));
+  }
   s.clean_exit = false;
+  s.closed_by = "SIGHUP";
   return s;
 }
 
@@ -92,7 +105,18 @@ TEST(SessionFile, EveryPartRoundTripsExactly) {
   EXPECT_EQ(b.tool, "Touch");
   EXPECT_EQ(b.history, a.history);
   EXPECT_EQ(b.history_head, 2);
+  ASSERT_EQ(b.history_states.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    const DocumentState& d = *b.history_states[i];
+    ASSERT_EQ(d.scene.objects.size(), 1u);
+    EXPECT_EQ(std::get<Curve<3>>(d.scene.objects[0].shape).components[0].points[0].x(), i);
+    EXPECT_EQ(d.pinned, std::vector<int>{i});
+    EXPECT_EQ(d.angles[2], 10.0f * i);
+    EXPECT_EQ(d.zoom, 1 + i);
+    EXPECT_EQ(d.settings.at("ribbon.width"), 0.1 * (i + 1));
+  }
   EXPECT_FALSE(b.clean_exit);
+  EXPECT_EQ(b.closed_by, "SIGHUP");
 }
 
 // One file per format version is kept: version 1's must always open.
@@ -123,6 +147,7 @@ TEST(SessionFile, AVersionTwoFileOpensWithItsToolSettingsAndHeldVertices) {
   EXPECT_EQ(s.tool_settings.at("ribbon.width"), 0.125);
   EXPECT_EQ(s.tool_settings.at("hand.K"), 250);
   EXPECT_TRUE(read_session(fs::path(S4D_TEST_DATA) / "io" / "sessions" / "v1.s4d").tool_settings.empty());
+  EXPECT_TRUE(s.history_states.empty()) << "before version 3 the history is labels only";
   // Written and read back unchanged.
   const SessionFile back = parse_session(session_text(s), "back.s4d");
   EXPECT_EQ(back.tool_settings, s.tool_settings);
@@ -138,8 +163,8 @@ TEST(SessionFile, AVersionTwoFileOpensWithItsToolSettingsAndHeldVertices) {
 TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
   std::string good = session_text(sample());
   std::string newer = good;
-  newer.replace(newer.find("\"shadow4d_session\": 2"), 21, "\"shadow4d_session\": 7");
-  EXPECT_NE(error_of(newer).find("written by a newer shadow4d (version 7); this one reads 2"), std::string::npos)
+  newer.replace(newer.find("\"shadow4d_session\": 3"), 21, "\"shadow4d_session\": 7");
+  EXPECT_NE(error_of(newer).find("written by a newer shadow4d (version 7); this one reads 3"), std::string::npos)
       << error_of(newer);
   EXPECT_NE(error_of(good.substr(0, good.size() / 2)).find("damaged or not JSON"), std::string::npos);
   EXPECT_NE(error_of(R"({"version": 1})").find("this is no session file"), std::string::npos);
@@ -169,6 +194,23 @@ TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
 
 // A writer killed between creating its temporary and the rename leaves FILE.tmp-PID: the next
 // start removes those of processes that are gone, and never one a running writer may still own.
+// The autosave's cache of states' text writes what the plain writer writes, and forgets the
+// states the history no longer has.
+TEST(SessionFile, CachedStateTextsWriteTheSameFile) {
+  SessionFile a = sample();
+  StateTextCache cache;
+  EXPECT_EQ(session_text(a, &cache), session_text(a));
+  EXPECT_EQ(cache.size(), 3u);
+  EXPECT_EQ(session_text(a, &cache), session_text(a)) << "from the cache";
+  auto changed = std::make_shared<DocumentState>(*a.history_states[1]);
+  changed->zoom = 9;
+  a.history_states[1] = changed;  // another state, maybe at a reused address: its own text
+  a.history_states.pop_back();
+  a.history.pop_back();
+  EXPECT_EQ(session_text(a, &cache), session_text(a));
+  EXPECT_EQ(cache.size(), 2u);
+}
+
 TEST(AtomicFile, StaleTemporariesOfDeadWritersAreRemoved) {
   const fs::path d = temp_dir("stale");
   const fs::path f = d / "auto.s4d";

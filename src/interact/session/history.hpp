@@ -2,36 +2,29 @@
 // concern, not each tool's): a tool records the state before its action under a label (one drag is one
 // step, however many ticks it lasted); undo hands back the state to restore and keeps the
 // current one for redo. Memory stays bounded: the last `max_steps` steps or `max_bytes` of
-// states, whichever is reached first (the oldest go).
+// states, whichever is reached first (the oldest go). The states are shared and never changed,
+// so a saved session (and each autosave) takes the history without copying it, and a session
+// reopened gets it back (load) under the same bounds.
 #pragma once
-#include <array>
-#include <map>
 #include <cstddef>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "io/scene.hpp"
+#include "io/session_file.hpp"  // DocumentState
 
 namespace s4d {
-
-// What an undo restores: the scene as it was (shapes, objects, physics, view settings), the
-// pins, and the 4D rotation of the view.
-struct DocumentState {
-  Scene scene;
-  std::vector<int> pinned;
-  std::array<float, 6> angles{};
-  Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();
-  double zoom = 1;
-  std::map<std::string, double> settings;  // the window's tool settings (app/tool_settings.hpp)
-  std::size_t bytes() const;  // an estimate of the memory it holds
-};
 
 class History {
  public:
   static constexpr std::size_t kMaxSteps = 200;
   static constexpr std::size_t kMaxBytes = std::size_t{256} << 20;  // 256 MB
+  // What a saved session keeps of it: the newest steps whose states hold at most this much (the
+  // file is about twice as large: numbers as text). Every step of a knot or a spun trefoil fits;
+  // a finely meshed surface keeps its last few dozen.
+  static constexpr std::size_t kMaxSavedBytes = std::size_t{16} << 20;  // 16 MB
 
   explicit History(std::size_t max_steps = kMaxSteps, std::size_t max_bytes = kMaxBytes)
       : max_steps_(max_steps), max_bytes_(max_bytes) {}
@@ -49,15 +42,31 @@ class History {
   // Labels of the steps done (oldest first), then of those undone (next to redo first).
   std::vector<std::string> done_labels() const;
   std::vector<std::string> undone_labels() const;
+  // The states in the labels' order (done oldest first, then undone next to redo first): what a
+  // session file keeps beside the labels (SessionFile::history_states).
+  std::vector<std::shared_ptr<const DocumentState>> states() const;
+  // The part of it a session file keeps: labels and states as above, the first `head` done, the
+  // oldest done steps (then the furthest redo steps) left out beyond `max_bytes` of states.
+  struct Saved {
+    std::vector<std::string> labels;
+    std::vector<std::shared_ptr<const DocumentState>> states;
+    std::size_t head = 0;
+  };
+  Saved to_save(std::size_t max_bytes = kMaxSavedBytes) const;
+  // Replaces the history with a saved one: labels and states as states() gives them, the first
+  // `head` done. False (and the history left empty) when they do not match; trimmed to the bounds.
+  bool load(const std::vector<std::string>& labels, const std::vector<std::shared_ptr<const DocumentState>>& states,
+            std::size_t head);
   std::size_t bytes() const { return bytes_; }
   std::size_t dropped() const { return dropped_; }  // steps forgotten to stay within the bounds
 
  private:
   struct Step {
     std::string label;
-    DocumentState state;  // done_: the state before the step; undone_: the state after it
+    std::shared_ptr<const DocumentState> state;  // done_: the state before the step; undone_: after it
     std::size_t bytes = 0;
   };
+  static Step make_step(std::string label, std::shared_ptr<const DocumentState> state);
   void trim();
 
   std::size_t max_steps_, max_bytes_;

@@ -401,9 +401,11 @@ SessionFile Session::save_state() const {
   f.view.base_frame = doc_.scene.frame;
   f.view.trackball = doc_.scene.view.trackball;
   f.view.zoom = doc_.scene.view.zoom;
-  f.history = history_.done_labels();
-  f.history_head = static_cast<int>(f.history.size());
-  for (const std::string& l : history_.undone_labels()) f.history.push_back(l);
+  // Shared, not copied: the autosave takes it every interval.
+  History::Saved h = history_.to_save();
+  f.history = std::move(h.labels);
+  f.history_states = std::move(h.states);
+  f.history_head = static_cast<int>(h.head);
   f.saved_at = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
   return f;
 }
@@ -429,6 +431,8 @@ void Session::open_saved(const SessionFile& saved, const std::string& path, cons
     w->reshape = curves_are_bodies(doc_.scene);
     offer_state(std::move(w));
   }
+  // Undo goes on where it was left (a file without the states, from before version 3, has none).
+  if (!saved.history_states.empty()) history_.load(saved.history, saved.history_states, static_cast<std::size_t>(saved.history_head));
 }
 
 void Session::offer_state(std::unique_ptr<WorldState> state) {

@@ -122,10 +122,11 @@ class Session {
   std::function<void(SessionFile&)> save_window;
 
   // [sessions] The work as it is now (File > Save session, the autosave): the scene with its
-  // current shapes, the simulation's state from the last snapshot, the view, the history's labels.
+  // current shapes, the simulation's state from the last snapshot, the view, the undo history.
   SessionFile save_state() const;
-  // Opens a saved session: its document, then the World put in the saved state. A vertex the hand
-  // held when it was saved is pinned where it was (no hand holds it now; P lets it go).
+  // Opens a saved session: its document, then the World put in the saved state, and its undo
+  // history (within the History's bounds). A vertex the hand held when it was saved is pinned
+  // where it was (no hand holds it now; P lets it go).
   void open_saved(const SessionFile& saved, const std::string& path, const SessionOptions& options);
 
   // The device's workspace laid onto the view (sent to the simulation; the window refits it

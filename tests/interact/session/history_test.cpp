@@ -72,5 +72,35 @@ TEST(History, BoundedInStepsAndBytes) {
   EXPECT_EQ(History::kMaxBytes, std::size_t{256} << 20);
 }
 
+// What a session file keeps: the newest steps within its byte bound (the oldest done ones go
+// first), and a load that does not match its labels is refused, leaving nothing to undo.
+TEST(History, SavedWithinItsBoundAndLoadedBack) {
+  History h;
+  for (int i = 0; i < 6; ++i) h.record("step " + std::to_string(i), state_with(i, 20));
+  auto s = h.undo(state_with(6, 20));  // one step undone: a redo state
+  ASSERT_TRUE(s);
+  const std::size_t one = state_with(0, 20).bytes();
+  const History::Saved all = h.to_save();
+  EXPECT_EQ(all.labels.size(), 6u);
+  EXPECT_EQ(all.head, 5u);
+  const History::Saved some = h.to_save(3 * one + one / 2);
+  ASSERT_EQ(some.states.size(), 3u);
+  EXPECT_EQ(some.head, 2u) << "the oldest done steps are left out, the redo step kept";
+  EXPECT_EQ(some.labels.front(), "step 3");
+  EXPECT_EQ(x_of(*some.states.back()), 6) << "the redo step's state: after it";
+
+  History back;
+  ASSERT_TRUE(back.load(some.labels, some.states, some.head));
+  auto u = back.undo(state_with(5, 20));
+  ASSERT_TRUE(u);
+  EXPECT_EQ(x_of(*u), 4);
+  EXPECT_EQ(back.undone_labels().size(), 2u);
+
+  History wrong;
+  EXPECT_FALSE(wrong.load({"a", "b"}, {some.states.front()}, 1)) << "one state for two labels";
+  EXPECT_FALSE(wrong.can_undo());
+  EXPECT_FALSE(wrong.load({"a"}, {some.states.front()}, 2)) << "a head past the end";
+}
+
 }  // namespace
 }  // namespace s4d
