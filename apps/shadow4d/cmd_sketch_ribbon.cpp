@@ -41,6 +41,7 @@ void run(const SketchRibbonOptions& opt) {
   if (const auto dir = std::filesystem::path(opt.out).parent_path(); !dir.empty()) std::filesystem::create_directories(dir);
   save_scene(scene, opt.out);
 
+  if (!r.changes.empty()) std::cout << r.changes << "\n";
   const Grid& g = *r.surface.grid;
   std::cout << "ribbon '" << name << "': " << g.rows << " rows x " << g.cols << " ("
             << r.surface.vertex_count() << " vertices, " << r.surface.triangle_count() << " triangles), length "
@@ -83,6 +84,9 @@ const CommandRegistrar kSketchRibbon(
       sub.add_option("--spacing", opt->ribbon.spacing, "between rows (default min(width/2, size/60))");
       sub.add_option("--across", opt->ribbon.across, "vertices across (2..64)")->capture_default_str();
       sub.add_option("--smoothing", opt->ribbon.smoothing, "length over which w is smoothed (default 0.25 of the size)");
+      sub.add_option("--max-move", opt->ribbon.max_move,
+                     "widths the centre line may be smoothed off the stroke where the ribbon would fold (0: never)")
+          ->capture_default_str();
       sub.add_option("--dt", opt->dt, "seconds between stroke samples")->capture_default_str();
       sub.add_option("--name", opt->name, "the new object's name")->capture_default_str();
       sub.callback([opt] { run(*opt); });
