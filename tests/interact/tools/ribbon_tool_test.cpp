@@ -2,8 +2,8 @@
 // way out, becomes a ribbon passing above then below in w, added to the scene and simulated.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <string>
 
