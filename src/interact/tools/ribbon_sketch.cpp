@@ -659,6 +659,14 @@ SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
   return out;
 }
 
+bool ribbon_stroke_comes_back(std::span<const RibbonStrokeSample> stroke, double width) {
+  if (stroke.size() < 3 || !(width > 0)) return false;
+  double length = 0;
+  for (std::size_t i = 1; i < stroke.size(); ++i) length += (stroke[i].at - stroke[i - 1].at).norm();
+  const double gap = (stroke.back().at - stroke.front().at).norm();
+  return gap <= 1.5 * width && length > 6 * width;
+}
+
 // [SECTION] scenes
 
 SketchObstacles sketch_obstacles(const Scene& scene) {

@@ -89,6 +89,11 @@ SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
                                   const Vec3& toward_eye, const RibbonSketchOptions& options = {},
                                   std::span<const std::string> names = {});
 
+// Whether a stroke for a ribbon `width` wide comes back to where it began (its ends within 1.5
+// widths, its length over 6): a loop, as a knot's stroke closes there. The window's tool and
+// `shadow4d sketch-ribbon` close such a stroke unless told otherwise.
+bool ribbon_stroke_comes_back(std::span<const RibbonStrokeSample> stroke, double width);
+
 // The surfaces of a scene as ribbon_from_sketch takes them, with their names: objects of R^4 as
 // they are; an object of R^3 as the view draws it (the 4D frame does not turn it), so in the
 // shadow where its points are, at the view's w = 0. Curves are left out and counted.

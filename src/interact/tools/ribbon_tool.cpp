@@ -49,12 +49,8 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
     message_ = "a click is not a stroke; drag the ribbon's centre line";
     return false;
   }
-  // A stroke that comes back to where it began is a loop, as a knot's stroke closes there.
   const double width = options.width > 0 ? options.width : 0.04 * view_size;
-  double length = 0;
-  for (std::size_t i = 1; i < stroke.size(); ++i) length += (stroke[i].at - stroke[i - 1].at).norm();
-  const double gap = (stroke.back().at - stroke.front().at).norm();
-  return build({stroke, toward_eye, view_size, !options.closed && gap <= 1.5 * width && length > 6 * width}, s);
+  return build({stroke, toward_eye, view_size, !options.closed && ribbon_stroke_comes_back(stroke, width)}, s);
 }
 
 bool RibbonTool::retry(Session& s) {
