@@ -19,6 +19,7 @@ namespace {
 struct SketchRibbonOptions {
   std::string scene, stroke, out, rotate, name = "ribbon";
   double dt = 1.0 / 120.0;
+  bool open = false;  // keep a stroke that comes back to its start open
   RibbonSketchOptions ribbon;
 };
 
@@ -36,11 +37,20 @@ void run(const SketchRibbonOptions& opt) {
   const SketchObstacles others = sketch_obstacles(scene);
   // The eye of the scene's camera, as the window's sketch plane faces it.
   const Vec3 eye = scene.view.trackball.normalized() * Vec3::UnitZ();
-  const SketchedRibbon r = ribbon_from_sketch(stroke, others.surfaces, scene.frame, eye, opt.ribbon, others.names);
+  RibbonSketchOptions o = opt.ribbon;
+  if (opt.open && o.closed) throw Error("--open and --closed contradict each other; give one of them");
+  // As in the window: a stroke that comes back to where it began is a loop.
+  const bool came_back = !o.closed && !opt.open && ribbon_stroke_comes_back(stroke, o.width);
+  if (came_back) {
+    o.closed = true;
+    std::cout << "a loop: the stroke came back to its start (--open keeps it open)\n";
+  }
+  const SketchedRibbon r = ribbon_from_sketch(stroke, others.surfaces, scene.frame, eye, o, others.names);
   const std::string name = add_sketched_ribbon(scene, r, opt.name);
   if (const auto dir = std::filesystem::path(opt.out).parent_path(); !dir.empty()) std::filesystem::create_directories(dir);
   save_scene(scene, opt.out);
 
+  if (!r.changes.empty()) std::cout << r.changes << "\n";
   const Grid& g = *r.surface.grid;
   std::cout << "ribbon '" << name << "': " << g.rows << " rows x " << g.cols << " ("
             << r.surface.vertex_count() << " vertices, " << r.surface.triangle_count() << " triangles), length "
@@ -78,11 +88,16 @@ const CommandRegistrar kSketchRibbon(
       sub.add_option("--out", opt->out, "the scene with the ribbon added (.json)")->required();
       sub.add_option("--rotate", opt->rotate, "rotations of the 4D view, degrees, in order, e.g. xw=30,yz=10");
       sub.add_option("--width", opt->ribbon.width, "ribbon width, scene units")->capture_default_str();
-      sub.add_flag("--closed", opt->ribbon.closed, "join the stroke's end to its start (a ribbon loop)");
+      sub.add_flag("--closed", opt->ribbon.closed,
+                   "join the stroke's end to its start (a ribbon loop; the default when it comes back there)");
+      sub.add_flag("--open", opt->open, "keep a stroke that comes back to its start open");
       sub.add_option("--clearance", opt->ribbon.clearance, "w gap at every passage (default 0.05 of the stroke's size)");
       sub.add_option("--spacing", opt->ribbon.spacing, "between rows (default min(width/2, size/60))");
       sub.add_option("--across", opt->ribbon.across, "vertices across (2..64)")->capture_default_str();
       sub.add_option("--smoothing", opt->ribbon.smoothing, "length over which w is smoothed (default 0.25 of the size)");
+      sub.add_option("--max-move", opt->ribbon.max_move,
+                     "widths the centre line may be smoothed off the stroke where the ribbon would fold (0: never)")
+          ->capture_default_str();
       sub.add_option("--dt", opt->dt, "seconds between stroke samples")->capture_default_str();
       sub.add_option("--name", opt->name, "the new object's name")->capture_default_str();
       sub.callback([opt] { run(*opt); });

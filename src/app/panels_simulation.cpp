@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "app/panel_settings.hpp"
 #include "interact/session/autosave.hpp"
@@ -343,8 +344,32 @@ void Panels::ribbon_panel(GuiModel& model) {
   record_tool_setting(model, "change the ribbon's ends", put_back);
   ImGui::SliderInt("across", &o.across, 2, 8);
   record_tool_setting(model, "change the ribbon's rows", put_back);
-  if (const SketchedRibbon* r = model.ribbon.last()) {
+  RibbonTool& tool = model.ribbon;
+  if (!tool.kept_stroke().empty()) {  // a stroke that made no ribbon, kept for another try
+    ImGui::Separator();
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextColored(ImVec4(1, 0.6f, 0.15f, 1), "The stroke (orange) made no ribbon at width %.3g:", tool.last_width());
+    ImGui::TextUnformatted(tool.refusal().c_str());
+    ImGui::PopTextWrapPos();
+    if (tool.suggested_width() > 0) {
+      char use[64];
+      std::snprintf(use, sizeof use, "Width %.3g, try again", tool.suggested_width());
+      if (ImGui::Button(use)) {
+        model.session.record("change the ribbon's width");
+        o.width = tool.suggested_width();
+        tool.retry(model.session);
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("the widest ribbon that lies flat along this stroke");
+    }
+    if (ImGui::Button("Try again (Enter)")) tool.retry(model.session);
+    ImGui::SameLine();
+    if (ImGui::Button("Drop it (Esc)")) tool.drop_kept();
+  }
+  if (const SketchedRibbon* r = tool.last()) {
     ImGui::Text("last: %zu rows, length %.2f, %zu passage(s)", r->w.size(), r->length, r->passages.size());
+    if (r->smoothing.rounds > 0)
+      ImGui::TextDisabled("smoothed %d time(s) at %d turn(s), moved <= %.3g", r->smoothing.rounds, r->smoothing.turns,
+                          r->smoothing.moved);
     for (const RibbonPassage& p : r->passages)
       ImGui::BulletText("%s %s (gap %.3f)", p.below ? "below" : "above",
                         p.surface < 0 ? "itself" : "another surface", p.gap);

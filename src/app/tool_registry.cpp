@@ -34,6 +34,8 @@ const std::array<ToolEntry, 4> kTools{{
      "depth); where it passes another surface's shadow it goes above in w, or below with\n"
      "shift held. It is smoothed in w keeping every choice, checked to be embedded and\n"
      "simulated: above then below through a sphere links them. Then the tool is Touch again.\n"
+     "A rough stroke is smoothed where the ribbon would fold (within half its width); one that\n"
+     "still folds is kept: [ ] narrow or widen the ribbon, Enter tries it again, Esc drops it.\n"
      "(also: shadow4d sketch-ribbon SCENE STROKE --out OUT.json)",
      [](GuiModel& m) -> Tool& { return m.ribbon; }},
 }};
@@ -47,7 +49,7 @@ const std::array<KeyHelp, 16> kWindowKeys{{
     {"right click", "change a crossing, or pin / unpin"},
     {"F", "frame all: every object in the view"},
     {"T  E  K  R", "Touch, Explore, Sketch a knot, Sketch a ribbon"},
-    {"Esc", "back to Touch (drops a stroke being drawn)"},
+    {"Esc", "back to Touch (first drops a stroke being drawn, or kept)"},
     {"Space", "play / pause the simulation"},
     {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo, redo"},
     {"M", "the next curve drawing: tubes, shadow, diagram"},

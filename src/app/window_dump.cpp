@@ -85,7 +85,11 @@ void dump_tools(Json& j, GuiModel& model) {
     Json ps = Json::array();
     for (const RibbonPassage& p : r->passages) ps.push_back(p.below ? "below" : "above");
     j["ribbon_passages"] = ps;
+    j["ribbon_smoothing_rounds"] = r->smoothing.rounds;
   }
+  // A stroke that made no ribbon, kept for another try: its samples, and the width it was tried at.
+  j["ribbon_kept_samples"] = model.ribbon.kept_stroke().size();
+  j["ribbon_width"] = model.ribbon.last_width();
   j["hits_under_cursor"] = model.grab.hits().size();
   Json hits = Json::array();
   for (const SheetHit& h : model.grab.hits())

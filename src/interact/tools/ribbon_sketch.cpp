@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "interact/tools/ribbon_centre_line.hpp"
 #include "io/text_scanner.hpp"
 #include "knots/depth_edit.hpp"
 #include "proximity/mesh_proximity.hpp"
@@ -80,44 +81,6 @@ struct Rows {
     return d <= 1 || (closed && d == count() - 1);
   }
 };
-
-// Unit directions across the ribbon: in the plane facing the eye, perpendicular to the stroke.
-// Where the stroke runs along the line of sight the last good direction carries on.
-std::vector<Vec3> across_directions(const Rows& rows, const Vec3& eye) {
-  const int n = rows.count();
-  std::vector<Vec3> out(n, Vec3::Zero());
-  std::vector<char> good(n, 0);
-  for (int i = 0; i < n; ++i) {
-    const int ip = i > 0 ? i - 1 : rows.closed ? n - 1 : i;
-    const int in = i + 1 < n ? i + 1 : rows.closed ? 0 : i;
-    const Vec3 t = (rows.at[in].at - rows.at[ip].at).normalized();
-    const Vec3 c = eye.cross(t);
-    if (c.norm() > 1e-3) {
-      out[i] = c.normalized();
-      good[i] = 1;
-    } else {
-      out[i] = t;  // replaced below
-    }
-  }
-  int first = -1;
-  for (int i = 0; i < n && first < 0; ++i)
-    if (good[i]) first = i;
-  if (first < 0)
-    throw Error("the stroke runs along the line of sight everywhere: the ribbon's width has no direction; "
-                "draw across the view");
-  for (int k = 1; k < n; ++k) {
-    const int i = (first + k) % n, prev = (i + n - 1) % n;
-    if (good[i] || (!rows.closed && i < first)) continue;
-    const Vec3 t = out[i];
-    out[i] = (out[prev] - out[prev].dot(t) * t).normalized();
-  }
-  for (int i = first - 1; i >= 0 && !rows.closed; --i)
-    if (!good[i]) {
-      const Vec3 t = out[i];
-      out[i] = (out[i + 1] - out[i + 1].dot(t) * t).normalized();
-    }
-  return out;
-}
 
 // Where a point of the ribbon's shadow lies on its grid: cell row `row`, a fraction f of the way
 // to the next row, across at v in [0, 1].
@@ -309,26 +272,35 @@ void check_inputs(std::span<const RibbonStrokeSample> stroke, std::span<const Su
     throw Error("the direction towards the eye must be a finite, non-zero vector");
   if (options.across < 2 || options.across > 64)
     throw Error("a ribbon has 2 to 64 vertices across, not " + std::to_string(options.across));
-  for (const auto* x : {&options.spacing, &options.clearance, &options.smoothing})
+  for (const auto* x : {&options.spacing, &options.clearance, &options.smoothing, &options.max_move})
     if (!(*x >= 0) || !std::isfinite(*x))
-      throw Error("the ribbon's spacing, clearance and smoothing must be finite and not negative");
+      throw Error("the ribbon's spacing, clearance, smoothing and largest move must be finite and not negative");
   for (std::size_t k = 0; k < others.size(); ++k)
     for (const Vec4& p : others[k].vertices)
       if (!p.allFinite()) throw Error(surface_name(names, static_cast<int>(k)) + " has a vertex that is not finite");
 }
 
-// The stroke laid out as a flat ribbon facing the eye: the pen's path resampled into rows, the
-// ribbon's proportions, and its shadow. Not copied or moved once made: its grid points into it.
+// The stroke laid out as a flat ribbon facing the eye: the pen's path, its centre line in rows
+// (smoothed where the ribbon would fold), the ribbon's proportions, and its shadow. Not copied or
+// moved once made: its grid points into it.
 struct Layout {
   std::vector<PenPoint<3>> path;
-  double size = 0, width = 0, path_length = 0, closing = 0, clearance = 0;
+  double size = 0, width = 0, path_length = 0, clearance = 0;
+  double join = 1;  // closed: the fraction of the way round where the stroke's closing stretch starts
   Rows rows;
   std::vector<Vec3> centre;
+  CentreLineSmoothing smoothing;
+  std::vector<RibbonFold> folds;  // left after smoothing
+  std::vector<FoldPlace> places;  // theirs on the stroke as drawn
   Surface<3> shadow;
   RibbonGrid grid{nullptr, nullptr, 0};
   double scale = 0;  // of the whole sketch, for tolerances
   int n() const { return rows.count(); }
 };
+
+double row_spacing(const RibbonSketchOptions& o, double width, double size) {
+  return o.spacing > 0 ? o.spacing : std::min(width / 2, size / 60);
+}
 
 void lay_out(Layout& l, std::span<const RibbonStrokeSample> stroke, const Vec3& eye, const RibbonSketchOptions& options) {
   // The pen's path, its size and the ribbon's proportions.
@@ -349,45 +321,96 @@ void lay_out(Layout& l, std::span<const RibbonStrokeSample> stroke, const Vec3& 
   if (l.width < 1e-4 * l.size)
     throw Error("a ribbon " + fmt(l.width) + " wide is too narrow for a stroke " + fmt(l.size) +
                 " across (at least 1/10000 of it)");
-  const double spacing = options.spacing > 0 ? options.spacing : std::min(l.width / 2, l.size / 60);
+  const double spacing = row_spacing(options, l.width, l.size);
   for (std::size_t i = 1; i < l.path.size(); ++i) l.path_length += (l.path[i].at - l.path[i - 1].at).norm();
-  l.closing = options.closed ? (l.path.back().at - l.path.front().at).norm() : 0.0;
-  l.path_length += l.closing;
+  const double closing = options.closed ? (l.path.back().at - l.path.front().at).norm() : 0.0;
+  l.path_length += closing;
+  l.join = options.closed ? (l.path_length - closing) / l.path_length : 1.0;
   if (l.path_length / spacing > kMaxRows)
     throw Error("a spacing of " + fmt(spacing) + " along a stroke " + fmt(l.path_length) + " long gives more than " +
                 std::to_string(kMaxRows) + " rows");
   l.clearance = options.clearance > 0 ? options.clearance : 0.05 * l.size;
 
+  // The centre line, smoothed where the ribbon would fold.
+  CentreLineResult line = ribbon_centre_line(l.path, options.closed, spacing, options.closed ? 8 : 2, l.width, eye,
+                                             options.max_move * l.width);
+  l.smoothing = line.smoothing;
+  l.folds = std::move(line.folds);
+  l.places = std::move(line.places);
+  l.path_length = line.line.length;
   l.rows.closed = options.closed;
-  l.rows.at = resample_pen_path<3>(l.path, spacing, options.closed, options.closed ? 8 : 2);
-  // The closing stretch is the pen's last move: it keeps the stroke's last time.
-  for (int i = 1; i < l.rows.count(); ++i) l.rows.at[i].time = std::max(l.rows.at[i].time, l.rows.at[i - 1].time);
-  const int segments = options.closed ? l.n() : l.n() - 1;
-  l.rows.spacing = l.path_length / segments;
+  l.rows.at = std::move(line.line.rows);
+  l.rows.spacing = line.line.spacing;
   for (const PenPoint<3>& p : l.rows.at) l.centre.push_back(p.at);
 
   // The ribbon's shadow: face-on to the eye, width across the stroke.
-  l.shadow = ribbon_along(l.centre, options.closed, across_directions(l.rows, eye), l.width, options.across);
+  l.shadow = ribbon_along(l.centre, options.closed, line.line.across, l.width, options.across);
   l.grid = RibbonGrid{&l.shadow, &l.rows, options.across};
   l.scale = std::max(l.size, l.width);
 }
 
+// The widest ribbon narrower than the layout's whose centre line lies flat without folding, to
+// two significant digits (rounded down); 0 when none does down to a twentieth of the width (a
+// narrower one would be another ribbon: the turn is what to change).
+double widest_flat(const Layout& l, const Vec3& eye, const RibbonSketchOptions& o) {
+  auto flat = [&](double w) {
+    const double spacing = row_spacing(o, w, l.size);
+    if (l.path_length / spacing > kMaxRows) return false;
+    return ribbon_centre_line(l.path, o.closed, spacing, o.closed ? 8 : 2, w, eye, o.max_move * w).folds.empty();
+  };
+  double good = 0, bad = l.width;
+  for (double w = 0.7 * l.width; w >= std::max(l.width / 20, 1e-4 * l.size) && good == 0; w *= 0.7) {
+    if (flat(w)) good = w;
+    else bad = w;
+  }
+  if (good == 0) return 0;
+  for (int k = 0; k < 3; ++k) {
+    const double mid = 0.5 * (good + bad);
+    (flat(mid) ? good : bad) = mid;
+  }
+  const double digit = std::pow(10.0, std::floor(std::log10(good)) - 1);
+  const double rounded = std::floor(good / digit) * digit;
+  return rounded > 0 && flat(rounded) ? rounded : good;
+}
+
+// Refuses a ribbon that folds at cell rows a < b, at `place` on the stroke as drawn (`along` the
+// fraction of the way along it): says where, how far the stroke was allowed to be smoothed, and
+// what to change: the turn, the stroke's end for a loop's join, or the width.
+[[noreturn]] void refuse_fold(const Layout& l, int a, int b, const FoldPlace& place, const Vec3& eye,
+                              const RibbonSketchOptions& o) {
+  const int n = l.n();
+  // A closed ribbon's join (the straight stretch from the stroke's end back to its start) turns at
+  // both its ends.
+  const double join = l.join * n, near = l.width / l.rows.spacing;
+  const bool at_join = l.rows.closed && (2 * (b - a) > n || b >= join - near || a <= near || b >= n - near);
+  std::string what = "the ribbon folds onto itself near " + fmt(place.at) + ", " +
+                     std::to_string(static_cast<int>(std::lround(100 * place.along))) +
+                     "% of the way along the stroke: the stroke turns there more sharply than half the ribbon's width (" +
+                     fmt(l.width / 2) + ")";
+  if (l.smoothing.limit > 0)
+    what += ", even smoothed as far as it may move (" + fmt(l.smoothing.limit) + ", " + fmt(o.max_move) +
+            " of the width)";
+  what += at_join ? "; end the stroke nearer its start, heading the way it began" : "; draw that turn wider";
+  const double widest = widest_flat(l, eye, o);
+  if (widest > 0)
+    what += ", or make the ribbon at most " + fmt(widest) + " wide";
+  else
+    what += " (no narrower ribbon lies flat there)";
+  throw RibbonFoldError(what, place.at, widest);
+}
+
 // Where the ribbon passes itself: overlapping cells far apart along the stroke. Cells near each
-// other along it overlap only where it folds, which no choice of w can undo.
-std::vector<SelfPair> self_overlaps(const Layout& l) {
+// other along it overlap only where it folds, which no choice of w can undo (the centre line was
+// smoothed to take those out; any left are refused).
+std::vector<SelfPair> self_overlaps(const Layout& l, const Vec3& eye, const RibbonSketchOptions& o) {
+  if (!l.folds.empty()) refuse_fold(l, l.folds[0].a, l.folds[0].b, l.places[0], eye, o);
   std::vector<SelfPair> pairs;
   for (const ProximityPair<3>& p : self_intersections<3>(l.shadow).pairs) {
     int a = l.grid.cell_row(l.shadow.triangles[p.a]), b = l.grid.cell_row(l.shadow.triangles[p.b]);
     if (a > b) std::swap(a, b);
     if (l.rows.separation(a, b) < l.width) {
-      // A closed ribbon's join (the straight stretch from the stroke's end back to its start)
-      // turns at both its ends.
-      const double join = (l.path_length - l.closing) / l.rows.spacing, near = l.width / l.rows.spacing;
-      const bool at_join = l.rows.closed && (b >= join - near || a <= near || b >= l.n() - near);
-      throw Error("the ribbon folds onto itself near " + fmt(l.rows.point(a + 0.5)) +
-                  ": the stroke turns more sharply there than half the ribbon's width (" + fmt(l.width / 2) + "); " +
-                  (at_join ? "end the stroke nearer its start, heading the way it began"
-                           : "draw a wider curve or narrow the ribbon"));
+      const double u = l.rows.closed && 2 * (b - a) > l.n() ? b + 0.5 : a + 0.5;
+      refuse_fold(l, a, b, FoldPlace{l.rows.point(u), u / (l.rows.closed ? l.n() : l.n() - 1)}, eye, o);
     }
     pairs.push_back({a, b});
   }
@@ -600,6 +623,14 @@ void describe_passages(const Layout& l, const std::vector<DepthChain>& chain, st
                    [](const RibbonPassage& a, const RibbonPassage& b) { return a.at_length < b.at_length; });
 }
 
+// What the smoothing did, for the status line: "" when the stroke was kept as drawn.
+std::string smoothing_sentence(const CentreLineSmoothing& s, double width) {
+  if (s.rounds == 0) return "";
+  return "smoothed the stroke " + std::to_string(s.rounds) + (s.rounds == 1 ? " time" : " times") + " to take out " +
+         (s.turns == 1 ? std::string("a turn") : std::to_string(s.turns) + " turns") +
+         " too sharp for the ribbon's width (" + fmt(width) + "), moving its centre line by at most " + fmt(s.moved);
+}
+
 }  // namespace
 
 SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
@@ -608,8 +639,9 @@ SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
                                   std::span<const std::string> names) {
   check_inputs(stroke, others, toward_eye, options, names);
   Layout layout;
-  lay_out(layout, stroke, toward_eye.normalized(), options);
-  const std::vector<SelfPair> self_pairs = self_overlaps(layout);
+  const Vec3 eye = toward_eye.normalized();
+  lay_out(layout, stroke, eye, options);
+  const std::vector<SelfPair> self_pairs = self_overlaps(layout, eye, options);
   std::vector<Passage> passages;
   Constraints cons;
   passages_past_others(layout, stroke, others, frame, passages, cons);
@@ -622,7 +654,17 @@ SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
   out.w = chain[0].z;
   out.length = layout.path_length;
   out.clearance = layout.clearance;
+  out.smoothing = layout.smoothing;
+  out.changes = smoothing_sentence(layout.smoothing, layout.width);
   return out;
+}
+
+bool ribbon_stroke_comes_back(std::span<const RibbonStrokeSample> stroke, double width) {
+  if (stroke.size() < 3 || !(width > 0)) return false;
+  double length = 0;
+  for (std::size_t i = 1; i < stroke.size(); ++i) length += (stroke[i].at - stroke[i - 1].at).norm();
+  const double gap = (stroke.back().at - stroke.front().at).norm();
+  return gap <= 1.5 * width && length > 6 * width;
 }
 
 // [SECTION] scenes

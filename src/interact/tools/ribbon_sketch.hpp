@@ -9,7 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/frame.hpp"
+#include "interact/tools/ribbon_centre_line.hpp"
 #include "io/scene.hpp"
 #include "knots/stroke.hpp"
 #include "shape/surface.hpp"
@@ -28,6 +30,9 @@ struct RibbonSketchOptions {
   int across = 2;          // vertices across a row, 2 .. 64
   double clearance = 0;    // w gap kept at every passage, scene units; 0: 0.05 × the stroke's size
   double smoothing = 0;    // length along the ribbon over which w spreads; 0: 0.25 × size
+  double max_move = 0.5;   // in widths: how far the centre line may be smoothed off the stroke where
+                           // the ribbon would fold onto itself (a sharp corner, a jagged stretch), leaving
+                           // no point drawn more than twice that from it; 0: never
 };
 
 // One place where the ribbon's shadow passes another sheet's shadow, and the choice made there.
@@ -51,22 +56,43 @@ struct SketchedRibbon {
   double clearance = 0;      // the w gap used
   double gap_to_others = 0;  // smallest 4D distance to the other surfaces (infinity: none within
                              // 4 × clearance)
+  CentreLineSmoothing smoothing;  // what was done to the stroke where the ribbon would have folded
+  std::string changes;       // the same in a sentence ("" when the stroke was kept as drawn)
 };
 
-// Builds the ribbon: the stroke smoothed (Dynadraw), closed if asked and resampled; the width laid
-// across it in the plane facing `toward_eye` (shadow space); at every passage through the shadow
+// ribbon_from_sketch's refusal of a ribbon that folds onto itself where the stroke turns too
+// sharply for its width, even smoothed as far as it may be. what() says where and what to change.
+class RibbonFoldError : public Error {
+ public:
+  RibbonFoldError(const std::string& what, const Vec3& place, double widest)
+      : Error(what), place(place), widest(widest) {}
+  Vec3 place;     // the fold, in the shadow
+  double widest;  // a narrower width whose ribbon lies flat along this stroke (0: none)
+};
+
+// Builds the ribbon: the stroke smoothed (Dynadraw), closed if asked and resampled; where a flat
+// ribbon along it would fold onto itself, its centre line smoothed there, no further than
+// `max_move` widths from the stroke (ribbon_centre_line.hpp); the width laid across it in the
+// plane facing `toward_eye` (shadow space); at every passage through the shadow
 // of one of `others` (world coordinates, seen through `frame`) or of itself, w kept at least the
 // clearance above, or below where the modifier was held there (where the ribbon passes itself the
 // later strand chooses, as in the knot sketch); w smoothed keeping every choice; lifted to R^4 and
 // checked to meet neither itself nor the others. `names` (optional, one per other surface) name
 // them in the sentences. Throws s4d::Error with a sentence saying where and why for: a stroke of
 // fewer than 2 samples, non-finite or backward samples, no extent, a bad width, spacing or
-// clearance, a ribbon that folds onto itself (turns more sharply than it is wide), choices that
-// contradict each other at one place, or a result that is not embedded.
+// clearance, choices that contradict each other at one place, or a result that is not embedded;
+// RibbonFoldError for a ribbon that still folds onto itself (the stroke turns more sharply than
+// half the ribbon's width even smoothed), naming the place, the turn to draw wider and the widest
+// ribbon that would lie flat.
 SketchedRibbon ribbon_from_sketch(std::span<const RibbonStrokeSample> stroke,
                                   std::span<const Surface<4>> others, const Frame<4>& frame,
                                   const Vec3& toward_eye, const RibbonSketchOptions& options = {},
                                   std::span<const std::string> names = {});
+
+// Whether a stroke for a ribbon `width` wide comes back to where it began (its ends within 1.5
+// widths, its length over 6): a loop, as a knot's stroke closes there. The window's tool and
+// `shadow4d sketch-ribbon` close such a stroke unless told otherwise.
+bool ribbon_stroke_comes_back(std::span<const RibbonStrokeSample> stroke, double width);
 
 // The surfaces of a scene as ribbon_from_sketch takes them, with their names: objects of R^4 as
 // they are; an object of R^3 as the view draws it (the 4D frame does not turn it), so in the

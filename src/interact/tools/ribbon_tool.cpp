@@ -10,8 +10,11 @@
 namespace s4d {
 
 std::string RibbonTool::help() const {
+  if (!kept_.stroke.empty() && !drawing())
+    return "the stroke made no ribbon and is kept: [ ] narrow or widen the ribbon (or the Ribbon panel), Enter tries "
+           "it again, Esc drops it; or draw it again";
   return "sketch a ribbon: drag its centre line; hold shift where it should pass below what it crosses (above "
-         "otherwise); wheel: drawing depth; Esc stops";
+         "otherwise); wheel: drawing depth; [ ] its width; Esc stops";
 }
 
 void RibbonTool::add(const Vec3& p, double time, bool under) {
@@ -22,6 +25,7 @@ void RibbonTool::add(const Vec3& p, double time, bool under) {
 
 bool RibbonTool::press(const ToolInput& in, Session& s) {
   stroke_.clear();
+  drop_kept();  // a new stroke replaces the one kept
   t0_ = in.time;
   add(in.view.on_plane_through(in.view.centre + depth_ * in.view.toward_eye), in.time, in.shift);
   return true;
@@ -45,35 +49,71 @@ bool RibbonTool::finish(const std::vector<RibbonStrokeSample>& stroke, const Vec
     message_ = "a click is not a stroke; drag the ribbon's centre line";
     return false;
   }
+  const double width = options.width > 0 ? options.width : 0.04 * view_size;
+  return build({stroke, toward_eye, view_size, !options.closed && ribbon_stroke_comes_back(stroke, width)}, s);
+}
+
+bool RibbonTool::retry(Session& s) {
+  if (kept_.stroke.empty()) return false;
+  const Attempt a = kept_;
+  return build(a, s);
+}
+
+void RibbonTool::drop_kept() {
+  kept_ = {};
+  fold_at_.reset();
+  suggested_width_ = 0;
+  refusal_.clear();
+}
+
+bool RibbonTool::build(const Attempt& a, Session& s) {
   RibbonSketchOptions o = options;
-  if (!(o.width > 0)) o.width = 0.04 * view_size;  // a ribbon a twenty-fifth of the view wide
-  // A stroke that comes back to where it began is a loop, as a knot's stroke closes there.
-  double length = 0;
-  for (std::size_t i = 1; i < stroke.size(); ++i) length += (stroke[i].at - stroke[i - 1].at).norm();
-  const double gap = (stroke.back().at - stroke.front().at).norm();
-  const bool came_back = !o.closed && gap <= 1.5 * o.width && length > 6 * o.width;
-  if (came_back) o.closed = true;
+  if (!(o.width > 0)) o.width = 0.04 * a.view_size;  // a ribbon a twenty-fifth of the view wide
+  if (a.came_back) o.closed = true;
+  last_width_ = o.width;
   try {
     const SketchObstacles obstacles = sketch_obstacles(s.scene());
-    const SketchedRibbon r = ribbon_from_sketch(stroke, obstacles.surfaces, s.scene().frame, toward_eye, o, obstacles.names);
+    const SketchedRibbon r = ribbon_from_sketch(a.stroke, obstacles.surfaces, s.scene().frame, a.toward_eye, o,
+                                                obstacles.names);
     s.record("sketch a ribbon");
     const std::string name = add_sketched_ribbon(s.scene(), r);
     last_ = r;
     made_ = true;
+    drop_kept();
     int below = 0;
     for (const RibbonPassage& p : r.passages) below += p.below;
     char b[256];
     std::snprintf(b, sizeof b, "sketched %s%s: %zu passage(s), %zu above and %d below in w; simulating it", name.c_str(),
-                  came_back ? " (a loop: the stroke came back to its start)" : "", r.passages.size(),
+                  a.came_back ? " (a loop: the stroke came back to its start)" : "", r.passages.size(),
                   r.passages.size() - static_cast<std::size_t>(below), below);
     message_ = b;
+    if (!r.changes.empty()) message_ += "; " + r.changes;
     finished_ = true;
     s.objects_changed();  // the bodies there keep their motion and pins
     return true;
   } catch (const std::exception& e) {
-    message_ = std::string("no ribbon: ") + e.what();
+    // Kept, drawn where it was, so that a changed width (or the same after a turn of the view)
+    // can try it again without drawing it anew.
+    kept_ = a;
+    const auto* fold = dynamic_cast<const RibbonFoldError*>(&e);
+    fold_at_ = fold ? std::optional<Vec3>(fold->place) : std::nullopt;
+    suggested_width_ = fold ? fold->widest : 0;
+    refusal_ = e.what();
+    message_ = std::string("no ribbon: ") + e.what() +
+               ". The stroke is kept: change the width ([ ] or the Ribbon panel) and press Enter to try it again, "
+               "or draw it again; Esc drops it";
     return false;
   }
+}
+
+void RibbonTool::set_width(double w, Session& s) {
+  if (!(w > 0) || !std::isfinite(w)) return;
+  s.record("change the ribbon's width");
+  options.width = w;
+  char b[160];
+  std::snprintf(b, sizeof b, "ribbon width %.3g%s", w,
+                kept_.stroke.empty() ? "" : " (Enter tries the kept stroke with it)");
+  message_ = b;
 }
 
 bool RibbonTool::wheel(double steps, const ToolInput& in, Session& s) {
@@ -89,6 +129,22 @@ bool RibbonTool::key(ToolKey k, const ToolInput& in, Session& s) {
   if (k == ToolKey::kEscape && drawing()) {
     stroke_.clear();
     message_ = "stroke dropped";
+    return true;
+  }
+  if (k == ToolKey::kEscape && !kept_.stroke.empty()) {
+    drop_kept();
+    message_ = "the kept stroke is dropped (Esc again: back to Touch)";
+    return true;
+  }
+  if (k == ToolKey::kEnter && !kept_.stroke.empty() && !drawing()) {
+    retry(s);
+    return true;
+  }
+  if ((k == ToolKey::kSmaller || k == ToolKey::kLarger) && !drawing()) {
+    const double now = options.width > 0 ? options.width
+                       : last_width_ > 0  ? last_width_
+                                          : 0.04 * in.view.pixel_size * in.view.window.y();
+    set_width(now * (k == ToolKey::kLarger ? 1.25 : 0.8), s);
     return true;
   }
   return false;
@@ -118,7 +174,14 @@ void RibbonTool::overlay(Overlay& o, const Session& s) const {
   for (std::size_t i = 1; i < stroke_.size(); ++i)
     o.lines.push_back({stroke_[i - 1].at, stroke_[i].at,
                        stroke_[i].under ? overlay_colour(0.35, 0.6, 1) : overlay_colour(0.95, 0.95, 0.95), 3});
-  if (!made_ || drawing()) return;
+  if (drawing()) return;
+  // The kept stroke in orange, its fold ringed.
+  const std::vector<RibbonStrokeSample>& k = kept_.stroke;
+  for (std::size_t i = 1; i < k.size(); ++i)
+    o.lines.push_back({k[i - 1].at, k[i].at, k[i].under ? overlay_colour(0.35, 0.6, 1) : overlay_colour(1, 0.6, 0.15), 3});
+  if (!k.empty() && kept_.came_back) o.lines.push_back({k.back().at, k.front().at, overlay_colour(1, 0.6, 0.15, 0.5), 2});
+  if (fold_at_) o.dots.push_back({*fold_at_, overlay_colour(1, 0.2, 0.2), 12, false});
+  if (!made_ || !k.empty()) return;
   for (const RibbonPassage& p : last_.passages)
     o.dots.push_back({p.place, p.below ? overlay_colour(0.25, 0.45, 1) : overlay_colour(0.95, 0.25, 0.2), 6, true});
 }

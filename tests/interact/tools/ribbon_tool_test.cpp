@@ -2,8 +2,10 @@
 // way out, becomes a ribbon passing above then below in w, added to the scene and simulated.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "interact/live/live_simulation.hpp"
 #include "interact/tools/ribbon_tool.hpp"
@@ -72,6 +74,103 @@ TEST(RibbonTool, AClickIsNoRibbonAndBadStrokesSayWhy) {
   EXPECT_EQ(tool.last(), nullptr);
   EXPECT_NE(tool.take_message().find("a click is not a stroke"), std::string::npos);
   EXPECT_EQ(s.scene().objects.size(), 1u);
+}
+
+// Draws `stroke` (points on the plane z = 0, seen from +z) with the tool as the mouse would.
+void draw(RibbonTool& tool, Session& s, const std::vector<RibbonStrokeSample>& stroke) {
+  ToolInput in;
+  in.view.ray = Vec3(0, 0, -1);
+  in.view.window = Vec2(800, 600);
+  in.view.pixel_size = 0.005;
+  for (std::size_t i = 0; i < stroke.size(); ++i) {
+    in.view.eye = Vec3(stroke[i].at.x(), stroke[i].at.y(), 5);
+    in.time = stroke[i].time;
+    if (i == 0) tool.press(in, s);
+    else tool.drag(in, s);
+  }
+  tool.release(in, s);
+}
+
+// The rough hand-drawn loop of tests/interact/data (corners, a hook, tremor) comes back to its
+// start: a loop, smoothed where it folded, made and simulated; the status says what was done.
+TEST(RibbonTool, ARoughLoopIsSmoothedIntoARibbon) {
+  Session s;
+  sphere_session(s);
+  RibbonTool tool;
+  tool.options.width = 0.1;
+  draw(tool, s, read_ribbon_stroke(std::string(S4D_SOURCE_DIR) + "/tests/interact/data/rough_loop_stroke.txt", 1.0 / 120));
+  ASSERT_NE(tool.last(), nullptr) << tool.take_message();
+  EXPECT_TRUE(tool.last()->surface.grid->wrap_i);
+  EXPECT_GT(tool.last()->smoothing.rounds, 0);
+  EXPECT_TRUE(tool.kept_stroke().empty());
+  const std::string m = tool.take_message();
+  EXPECT_NE(m.find("(a loop"), std::string::npos) << m;
+  EXPECT_NE(m.find("smoothed the stroke"), std::string::npos) << m;
+  EXPECT_TRUE(tool.take_finished());
+  EXPECT_EQ(s.scene().objects.size(), 2u);
+  EXPECT_TRUE(s.simulating()) << s.physics_error();
+}
+
+// A hairpin too tight for a ribbon 0.3 wide is refused, and the stroke is kept with the reason
+// and the place drawn; [ narrows the ribbon, Enter tries the same stroke again; Esc drops it.
+TEST(RibbonTool, AStrokeThatMakesNoRibbonIsKeptForAnotherTry) {
+  Session s;
+  sphere_session(s);
+  RibbonTool tool;
+  tool.options.width = 0.3;
+  std::vector<RibbonStrokeSample> hairpin;
+  // Along y = 1 (above the sphere), a half turn of radius 0.05, and back, ending well short of its
+  // start (not a loop).
+  for (int i = 0; i <= 240; ++i) {
+    const double t = i / 240.0, a = std::numbers::pi * std::clamp((t - 0.4) / 0.2, 0.0, 1.0);
+    const double x = t < 0.4 ? -1 + 2.5 * t : t > 0.6 ? 0.6 - t : 0;
+    hairpin.push_back({Vec3(x + 0.05 * std::sin(a), 1.05 - 0.05 * std::cos(a), 0), i / 120.0, false});
+  }
+  draw(tool, s, hairpin);
+  EXPECT_EQ(tool.last(), nullptr);
+  EXPECT_FALSE(tool.take_finished());
+  EXPECT_EQ(s.scene().objects.size(), 1u);
+  ASSERT_FALSE(tool.kept_stroke().empty());
+  const std::string m = tool.take_message();
+  EXPECT_NE(m.find("folds onto itself near"), std::string::npos) << m;
+  EXPECT_NE(m.find("or make the ribbon at most"), std::string::npos) << m;
+  EXPECT_NE(m.find("The stroke is kept"), std::string::npos) << m;
+  EXPECT_NE(tool.help().find("Enter tries it again"), std::string::npos);
+  EXPECT_EQ(m.find(tool.refusal()), std::string("no ribbon: ").size()) << "the reason, whole, for the panel";
+  const double widest = tool.suggested_width();
+  EXPECT_GT(widest, 0);
+  EXPECT_LT(widest, 0.15);
+  // Drawn: the kept stroke and a ring where it folds.
+  Overlay o;
+  tool.overlay(o, s);
+  EXPECT_GE(o.lines.size(), hairpin.size() - 1);
+  ASSERT_EQ(o.dots.size(), 1u);
+  EXPECT_LT(std::abs(o.dots[0].at.x()), 0.3) << m;
+  // Enter with the same width: refused again, still kept.
+  ToolInput in;
+  EXPECT_TRUE(tool.key(ToolKey::kEnter, in, s));
+  EXPECT_EQ(tool.last(), nullptr);
+  EXPECT_FALSE(tool.kept_stroke().empty());
+  // [ three times: 0.3 x 0.8^3 = 0.154, still too wide; then the width it named: made.
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(tool.key(ToolKey::kSmaller, in, s));
+  EXPECT_NEAR(tool.options.width, 0.1536, 1e-9);
+  EXPECT_NE(tool.take_message().find("Enter tries the kept stroke"), std::string::npos);
+  tool.options.width = widest;
+  EXPECT_TRUE(tool.key(ToolKey::kEnter, in, s));
+  ASSERT_NE(tool.last(), nullptr) << tool.take_message();
+  EXPECT_TRUE(tool.kept_stroke().empty());
+  EXPECT_TRUE(tool.take_finished());
+  EXPECT_EQ(s.scene().objects.size(), 2u);
+  // Another refused stroke, dropped with Esc; Esc again is the window's (back to Touch).
+  tool.options.width = 0.3;
+  draw(tool, s, hairpin);
+  ASSERT_FALSE(tool.kept_stroke().empty());
+  EXPECT_TRUE(tool.key(ToolKey::kEscape, in, s));
+  EXPECT_TRUE(tool.kept_stroke().empty());
+  EXPECT_TRUE(tool.refusal().empty());
+  EXPECT_FALSE(tool.key(ToolKey::kEscape, in, s));
+  EXPECT_FALSE(tool.key(ToolKey::kEnter, in, s));
+  EXPECT_EQ(s.scene().objects.size(), 2u);
 }
 
 
