@@ -49,7 +49,7 @@ const std::array<KeyHelp, 16> kWindowKeys{{
     {"right click", "change a crossing, or pin / unpin"},
     {"F", "frame all: every object in the view"},
     {"T  E  K  R", "Touch, Explore, Sketch a knot, Sketch a ribbon"},
-    {"Esc", "back to Touch (first drops a stroke being drawn, or kept)"},
+    {"Esc", "back to Touch, dropping a stroke being drawn or kept"},
     {"Space", "play / pause the simulation"},
     {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo, redo"},
     {"M", "the next curve drawing: tubes, shadow, diagram"},

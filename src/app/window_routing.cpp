@@ -27,8 +27,13 @@ void pan_pixels(GuiModel& model, const ToolView& v, double dx, double dy) {
 void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const ToolInput& ti) {
   Session& session = model.session;
   Tool* tool = model.active_tool();
-  if (in.key_pressed(GLFW_KEY_ESCAPE) && !(tool && tool->key(ToolKey::kEscape, ti, session))) {
-    if (model.tool != ToolChoice::kTouch) model.choose(ToolChoice::kTouch);
+  if (in.key_pressed(GLFW_KEY_ESCAPE)) {  // drops what the tool has under way, and always back to Touch
+    const bool dropped = tool && tool->key(ToolKey::kEscape, ti, session);
+    if (model.tool != ToolChoice::kTouch) {
+      const std::string said = dropped && tool ? tool->take_message() : std::string();
+      model.choose(ToolChoice::kTouch);
+      if (!said.empty()) model.status = said + "; back to Touch";
+    }
   }
   if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
   if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) Panels::undo_or_redo(model, in.shift());

@@ -1017,7 +1017,8 @@ TEST(GuiSmoke, ARoughLoopEndsInAnEmbeddedRibbonAndARefusedStrokeIsKept) {
   l.push_back(at(frame + 1, "shot " + (dir / "kept.png").string()));
   l.push_back(at(frame + 3, "key ESCAPE"));
   l.push_back(at(frame + 5, "dump " + (dir / "dropped.json").string()));
-  frame += 8;
+  l.push_back(at(frame + 7, "key R"));  // back to the ribbon sketch, its width as it was
+  frame += 10;
   hairpin();
   for (int k = 0; k < 6; ++k) l.push_back(at(frame + 2 * k, "key LEFT_BRACKET"));  // 0.8^6: 0.26 as wide
   frame += 14;
@@ -1057,7 +1058,8 @@ TEST(GuiSmoke, ARoughLoopEndsInAnEmbeddedRibbonAndARefusedStrokeIsKept) {
   EXPECT_NE(why.find("The stroke is kept"), std::string::npos) << why;
   const auto dropped = checked_dump(dir / "dropped.json");
   EXPECT_EQ(dropped["ribbon_kept_samples"].get<int>(), 0) << "Esc dropped it";
-  EXPECT_EQ(dropped["tool"], "Sketch a ribbon") << "the first Esc only drops the kept stroke";
+  EXPECT_EQ(dropped["tool"], "Touch") << "Esc always returns to Touch";
+  EXPECT_NE(dropped["status"].get<std::string>().find("dropped; back to Touch"), std::string::npos) << dropped["status"];
   const auto retried = checked_dump(dir / "retried.json");
   EXPECT_EQ(retried["objects"].get<int>(), 2) << retried["status"];
   EXPECT_EQ(retried["tool"], "Touch");

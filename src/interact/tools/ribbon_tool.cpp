@@ -133,7 +133,7 @@ bool RibbonTool::key(ToolKey k, const ToolInput& in, Session& s) {
   }
   if (k == ToolKey::kEscape && !kept_.stroke.empty()) {
     drop_kept();
-    message_ = "the kept stroke is dropped (Esc again: back to Touch)";
+    message_ = "the kept stroke is dropped";
     return true;
   }
   if (k == ToolKey::kEnter && !kept_.stroke.empty() && !drawing()) {
