@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "command.hpp"
+#include "view_options.hpp"
 #include "core/error.hpp"
 #include "io/scene.hpp"
 #include "proximity/self_intersections.hpp"
@@ -79,10 +80,7 @@ std::size_t run_check(const CheckOptions& opt) {
 
   // Which view the shadow's numbers are of: the window turns a bare object of R^4 (no scene file
   // saying how to look at it) by xw 30, zw 20, so say how to see what it shows.
-  const bool scene_file = opt.input.size() > 5 && opt.input.ends_with(".json");
-  const std::string view = !opt.rotate.empty() ? "the input's frame turned " + opt.rotate
-                           : scene_file        ? "the scene's own frame (the window's first view)"
-                                               : "straight along w (the window opens it turned: --rotate xw=30,zw=20 gives its view)";
+  const std::string view = view_described(opt.input, opt.rotate);
   if (!opt.json) std::cout << "view: " << view << "\n";
   nlohmann::json out = {{"input", opt.input}, {"view", view}, {"objects", nlohmann::json::array()},
                         {"between", nlohmann::json::array()}};

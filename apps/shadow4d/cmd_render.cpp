@@ -43,6 +43,7 @@ const CommandRegistrar kRender(
           throw Error("render: nothing to write: give --out PNG, --svg FILE or --tikz FILE");
         Scene scene = load_scene_or_object(args->input);
         args->view.apply(scene);
+        std::cout << "view: " << args->view.described(args->input) << "\n";
         const auto [w, h] = args->view.parsed_size();
         if (!args->out.empty()) {
           IntersectionSummary drawn;

@@ -101,6 +101,10 @@ void run(const RunArgs& args) {
   const PhysicsWarnings& w = run->warnings();
   const ModelFacts m = run->facts();
   const double ms = 1e3 * wall / std::max<long>(1, steps);
+  // Which view the frames are drawn in (the window opens a scenario in its own frame).
+  const std::string view = sc.verdict.view.empty()
+                               ? "the scenario's own frame (the window's first view)"
+                               : "turned " + sc.verdict.view + " from the scenario's frame (the shadow its verdict judges)";
   Json metrics{{"scenario", sc.name}, {"dim", sc.dim}, {"pass", ok}, {"vertices", m.vertices},
                {"triangles", m.triangles}, {"springs", m.springs}, {"steps", steps}, {"time_step", m.time_step},
                {"wall_seconds", wall}, {"ms_per_step", ms}, {"contact_thickness", m.contact_thickness},
@@ -111,6 +115,7 @@ void run(const RunArgs& args) {
                              {"ccd_freezes", w.ccd_freezes}, {"global_freezes", w.global_freezes}}},
                {"verdict", v.numbers}, {"frames", frame_log}};
   if (!png_error.empty()) metrics["png_error"] = png_error;
+  metrics["view"] = view;
   std::ofstream(out / "metrics.json") << metrics.dump(2) << "\n";
 
   RunFacts facts;
@@ -124,6 +129,7 @@ void run(const RunArgs& args) {
   facts.ms_per_step = ms;
   facts.warnings = w;
   std::cout << verdict_line(facts) << std::endl;
+  std::cout << "view: " << view << std::endl;
   if (args.hash) {
     char h[32];
     std::snprintf(h, sizeof h, "%016llx", static_cast<unsigned long long>(run->state_hash()));

@@ -40,6 +40,15 @@ std::pair<int, int> ViewOptions::parsed_size() const {
   return {w, h};
 }
 
+std::string view_described(const std::string& input, const std::string& rotate) {
+  const bool scene_file = input.size() > 5 && input.ends_with(".json");
+  return !rotate.empty() ? "the input's frame turned " + rotate
+         : scene_file    ? "the scene's own frame (the window's first view)"
+                         : "straight along w (the window opens it turned: --rotate xw=30,zw=20 gives its view)";
+}
+
+std::string ViewOptions::described(const std::string& input) const { return view_described(input, rotate); }
+
 void ViewOptions::apply(Scene& scene) const {
   apply_rotations(scene.frame, parse_rotation_list(rotate, 4));
   if (!orbit.empty()) {

@@ -29,6 +29,13 @@ struct ViewOptions {
   void apply(Scene& scene) const;
   // Parses "WxH"; throws s4d::Error unless 16 <= W, H <= 8192.
   std::pair<int, int> parsed_size() const;
+  // Which view the numbers and pictures of `input` are of, in words: the window opens a bare
+  // object of R^4 (no scene file to say how to look at it) turned xw 30, zw 20, so commands that
+  // look along w say so, and how to get the window's view.
+  std::string described(const std::string& input) const;
 };
+
+// The same for a command with only --rotate (check).
+std::string view_described(const std::string& input, const std::string& rotate);
 
 }  // namespace s4d::cli
