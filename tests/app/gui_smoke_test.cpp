@@ -525,6 +525,49 @@ TEST(GuiSmoke, ASessionOpensWithItsToolAndSettingsAndABadOneLosesNothing) {
   EXPECT_FALSE(d["playing"].get<bool>()) << "saved paused";
 }
 
+// Two edits in one window (M: the curves' drawing, twice), its session saved on quit; a second
+// window opens that file, and Ctrl+Z gives the state before the last edit, again the one before
+// the first; Ctrl+Y redoes.
+TEST(GuiSmoke, ASavedSessionReopensWithItsUndoHistory) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_reopen_undo";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto saved = dir / "work.s4d";
+  {
+    std::ofstream(dir / "edit.txt") << "10 key M\n20 key M\n30 dump " << (dir / "edited.json").string() << "\n31 quit\n";
+    GuiOptions options;
+    options.autosave = saved.string();  // written whole on quit: the session as a file
+    options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenes/trefoil-knot.json";
+    options.input = (dir / "edit.txt").string();
+    EXPECT_EQ(run_gui_app(options), 0);
+  }
+  const auto edited = checked_dump(dir / "edited.json");
+  ASSERT_EQ(edited["history"].size(), 2u);
+  EXPECT_EQ(edited["curve_mode"], "diagram");
+  {
+    std::ofstream(dir / "undo.txt") << "20 dump " << (dir / "reopened.json").string() << "\n"
+                                    << "25 key-down LEFT_CONTROL\n26 key Z\n27 key-up LEFT_CONTROL\n"
+                                    << "40 dump " << (dir / "undone.json").string() << "\n"
+                                    << "45 key-down LEFT_CONTROL\n46 key Z\n47 key-up LEFT_CONTROL\n"
+                                    << "60 dump " << (dir / "undone2.json").string() << "\n"
+                                    << "65 key-down LEFT_CONTROL\n66 key Y\n67 key-up LEFT_CONTROL\n"
+                                    << "80 dump " << (dir / "redone.json").string() << "\n81 quit\n";
+    GuiOptions options;
+    options.autosave = (dir / "other.s4d").string();
+    options.open_spec = saved.string();
+    options.input = (dir / "undo.txt").string();
+    EXPECT_EQ(run_gui_app(options), 0);
+  }
+  const auto reopened = checked_dump(dir / "reopened.json");
+  EXPECT_EQ(reopened["curve_mode"], "diagram");
+  EXPECT_EQ(reopened["history"], edited["history"]) << "the undo history came back with the file";
+  EXPECT_EQ(checked_dump(dir / "undone.json")["curve_mode"], "shadow") << "the state before the last edit";
+  EXPECT_EQ(checked_dump(dir / "undone2.json")["curve_mode"], "tubes");
+  EXPECT_EQ(checked_dump(dir / "redone.json")["curve_mode"], "shadow") << "Ctrl+Y redoes";
+}
+
 TEST(GuiSmoke, AnUnfinishedRunsAutosaveIsOfferedOrWithRestoreTakenUp) {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
