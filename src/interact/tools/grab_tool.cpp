@@ -78,8 +78,10 @@ void GrabTool::take_chosen_sheet(const Vec2& cursor) {
 
 void GrabTool::hover(const ToolInput& in, Session& s) {
   hits_ = pick(in, s);
-  if (handle_) {
-    if (hits_.empty()) hits_.push_back(*handle_);
+  if (handle_) {  // a marker is drawn over every sheet: a press on it takes what it marks
+    const SheetHit h = *handle_;
+    std::erase_if(hits_, [&](const SheetHit& o) { return o.object == h.object && o.vertex == h.vertex; });
+    hits_.insert(hits_.begin(), h);
     handle_.reset();
   }
   if (std::isfinite(preferred_w_)) {

@@ -50,8 +50,9 @@ class GrabTool final : public Tool {
   // The next hover takes the sheet under the cursor nearest this depth in w, as Tab would (an
   // input script pointing at a vertex means that vertex's sheet).
   void prefer_depth(double w) { preferred_w_ = w; }
-  // A handle under the cursor (a scenario's marker): taken by the next hover when no sheet is hit
-  // there (a ribbon's thin end seen edge on), as a press on the marker takes what it marks.
+  // A handle under the cursor (a scenario's marker): the next hover puts it first, so that a
+  // press on the marker takes the vertex it marks, not a sheet the shadow folds over it there
+  // (nor nothing, at a ribbon's thin end seen edge on); Tab still reaches the sheets under it.
   void offer_handle(const SheetHit& h) { handle_ = h; }
   static constexpr int kMinCarryRings = 1, kMaxCarryRings = 40;
 
