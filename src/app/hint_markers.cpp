@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -108,9 +109,20 @@ void HintMarkers::update(GuiModel& model, double time) {
       model.status = std::string("the scenario's hints cannot be shown: ") + e.what();
     }
   }
+  const int held = snap ? snap->status.held_vertex : -1;
+  bool earlier_done = true;
   for (Step& s : steps_) {
+    if (!s.anchored && snap) {
+      const Vec4 by = s.target - s.start;
+      s.start = centre(model, s);
+      s.target = s.start + by;
+      const bool taken = held >= 0 && std::find(s.vertices.begin(), s.vertices.end(), held) != s.vertices.end();
+      s.anchored = taken || (earlier_done && held < 0);
+    }
     const double way = (s.target - s.start).norm();
-    s.done = s.done || (way > 0 && (centre(model, s) - s.start).dot(s.target - s.start) >= kDoneShare * way * way);
+    s.done = s.done || (s.anchored && way > 0 &&
+                        (centre(model, s) - s.start).dot(s.target - s.start) >= kDoneShare * way * way);
+    earlier_done = earlier_done && s.done;
   }
   const int n = next();
   model.hint_next.clear();

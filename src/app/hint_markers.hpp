@@ -25,9 +25,14 @@ class HintMarkers {
   struct Step {
     std::vector<int> vertices;  // world vertices taken
     Vec4 target = Vec4::Zero();  // world (R^3 worlds: w = 0)
-    Vec4 start = Vec4::Zero();   // their centre when the scenario opened
+    Vec4 start = Vec4::Zero();   // their centre when the step's turn came (see anchored)
     std::string say;
     bool done = false;
+    // A step's motion is from where its marker is when its turn comes, as a script's move is
+    // from where its vertices are when it starts: until then start and target follow the marker
+    // (an earlier step's patch may carry it). The turn comes when every earlier step is done and
+    // the hand holds nothing, or when the hand takes one of the step's vertices.
+    bool anchored = false;
   };
   const std::vector<Step>& steps() const { return steps_; }
   // The marker drawn under `cursor` (window pixels), or -1: a press there takes the marked sheet.

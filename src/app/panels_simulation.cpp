@@ -206,28 +206,29 @@ void Panels::hand_settings(GuiModel& model, const SceneStatus& st) {
   {  // the Touch tool: pull one vertex on the band, or carry a patch that stays where it is left
     GrabTool& g = model.grab;
     bool carry_before = g.carry();
-    double radius_before = g.carry_radius();
+    int rings_before = g.carry_rings();
     const auto put_back = [&] {
       const bool c = g.carry();
-      const double r = g.carry_radius();
+      const int r = g.carry_rings();
       g.set_carry(carry_before);
-      g.set_carry_radius(radius_before);
+      g.set_carry_rings(rings_before);
       carry_before = c;
-      radius_before = r;
+      rings_before = r;
     };
     bool carry = g.carry();
     if (ImGui::Checkbox("carry a patch (C)", &carry)) g.set_carry(carry);
     record_tool_setting(model, "change the touch", put_back);
     if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("on: a drag carries the patch around the vertex (its radius along the surface),\n"
+      ImGui::SetTooltip("on: a drag carries the patch around the vertex (the vertices within so many rings\n"
+                        "of mesh edges, the one pressed on first: never another sheet),\n"
                         "which stays held where it is let go (clear pins or P frees it; Ctrl+Z undoes it);\n"
                         "off: a drag pulls one vertex on the rubber band");
     if (g.carry()) {
-      float r = static_cast<float>(g.carry_radius());
-      if (ImGui::SliderFloat("radius ([ ])", &r, static_cast<float>(GrabTool::kMinCarryRadius),
-                             static_cast<float>(GrabTool::kMaxCarryRadius), "%.3f", ImGuiSliderFlags_Logarithmic))
-        g.set_carry_radius(r);
-      record_tool_setting(model, "change the carry radius", put_back);
+      int r = g.carry_rings();
+      if (ImGui::SliderInt("rings ([ ])", &r, GrabTool::kMinCarryRings, GrabTool::kMaxCarryRings)) g.set_carry_rings(r);
+      record_tool_setting(model, "change the carry rings", put_back);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the patch: the vertex pressed on and every vertex within this many edges of it");
     }
   }
   ImGui::Text("pins: %d", st.pinned);

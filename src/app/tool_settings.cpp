@@ -24,7 +24,7 @@ ToolSettings tool_settings(const GuiModel& model) {
   s["ribbon.across"] = r.across;
   s["simulation.time_scale"] = model.time_scale;
   s["touch.carry"] = model.grab.carry() ? 1 : 0;
-  s["touch.carry_radius"] = model.grab.carry_radius();
+  s["touch.carry_rings"] = model.grab.carry_rings();
   s["view.touch_and_sound_only"] = model.touch_and_sound_only ? 1 : 0;
   if (model.audio) {
     s["sound.mute"] = model.audio->muted() ? 1 : 0;
@@ -45,8 +45,8 @@ void apply_tool_settings(GuiModel& model, const ToolSettings& settings) {
   get("ribbon.closed", 0.0, 1.0, [&](double v) { r.closed = v > 0.5; });
   get("ribbon.across", 2.0, 64.0, [&](double v) { r.across = static_cast<int>(std::lround(v)); });
   get("touch.carry", 0.0, 1.0, [&](double v) { model.grab.set_carry(v > 0.5); });
-  get("touch.carry_radius", GrabTool::kMinCarryRadius, GrabTool::kMaxCarryRadius,
-      [&](double v) { model.grab.set_carry_radius(v); });
+  get("touch.carry_rings", GrabTool::kMinCarryRings, GrabTool::kMaxCarryRings,
+      [&](double v) { model.grab.set_carry_rings(static_cast<int>(std::lround(v))); });
   get("simulation.time_scale", 0.01, 4.0, [&](double v) {
     model.time_scale = static_cast<float>(v);
     model.session.send(live::SetTimeScale{v});

@@ -43,7 +43,7 @@ void dump_simulation(Json& j, Session& s, const Camera& camera, const Rect& view
     for (std::size_t v = 0; v < snap->flags.size(); ++v)
       if (snap->flags[v] & 1) pins.push_back(v);
     j["pinned_vertices"] = pins;
-    j["carry_radius"] = st.carry_radius;
+    j["carry_rings"] = st.carry_rings;
     Json pixels = Json::array();
     const int nv = snap->point_dimension > 0 ? static_cast<int>(snap->points.size()) / snap->point_dimension : 0;
     for (int v = 0; v < nv; ++v) {

@@ -118,7 +118,7 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
   Tool* tool = model.active_tool();
   // A device's button does what the active tool does with a press (grab, explore, or draw itself).
-  session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone, tool ? tool->device_carry_radius() : 0);
+  session.set_device_button(tool ? tool->device_button() : DeviceButton::kNone, tool ? tool->device_carry_rings() : 0);
   if (tool) tool->update(ti, session);
   const bool over_view = model.layout.view.contains(static_cast<float>(in.cursor().x()), static_cast<float>(in.cursor().y()));
   const bool captured = (io.WantCaptureMouse || !over_view) && !r.tool_drag && !r.view_drag;

@@ -79,7 +79,7 @@ struct SceneStatus {
   std::int64_t rollbacks = 0, ccd_freezes = 0, global_freezes = 0, rejected_inputs = 0;
   int held_vertex = -1;         // the vertex on the rubber band, -1 when none
   int grab_mode = 0;            // 0: in the shadow, 1: along the shadow ray (w, or a knot's depth)
-  double carry_radius = 0;      // the held vertex carries the patch of this radius (0: on the band)
+  int carry_rings = 0;          // the held vertex carries the patch of this many rings (0: on the band)
   Vec3 band_from = Vec3::Zero();  // shadow space: the hand's end of the rubber band
   Vec3 band_to = Vec3::Zero();    // shadow space: the held vertex
   double band_force = 0;        // N, what the band pulls the vertex with

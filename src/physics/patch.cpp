@@ -1,65 +1,70 @@
-// Dijkstra over the mesh's CSR adjacency, cut off at the radius.
+// Breadth-first over the mesh's CSR adjacency, cut off at the ring count.
 #include "physics/patch.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <functional>
-#include <limits>
 
 namespace s4d {
 
-void PatchScratch::reserve(int vertex_count, std::size_t edge_ends) {
-  distance.reserve(static_cast<std::size_t>(vertex_count));
-  heap.reserve(edge_ends + static_cast<std::size_t>(vertex_count));
+void PatchScratch::reserve(int vertex_count) { ring.reserve(static_cast<std::size_t>(std::max(vertex_count, 0))); }
+
+double patch_weight(int k, int rings) {
+  if (rings <= 0 || k <= 0) return 1;
+  const double u = static_cast<double>(k) / (rings + 1);
+  return (1 - u * u) * (1 - u * u);
 }
 
-template <int D>
-void grow_patch(const Model<D>& model, std::span<const Vec<D>> x, std::span<const int> centres, double radius,
+void grow_patch(std::span<const int> offset, std::span<const int> adjacency, std::span<const int> centres, int rings,
                 Patch& out, PatchScratch& scratch) {
   out.vertices.clear();
+  out.rings.clear();
   out.weights.clear();
-  const int nv = std::min(model.nv, static_cast<int>(x.size()));
-  constexpr double kFar = std::numeric_limits<double>::infinity();
-  auto& dist = scratch.distance;
-  auto& heap = scratch.heap;
-  dist.assign(static_cast<std::size_t>(nv), kFar);
-  heap.clear();
-  const std::greater<> later;  // a min-heap on distance
+  const int nv = offset.empty() ? 0 : static_cast<int>(offset.size()) - 1;
+  auto& ring = scratch.ring;
+  ring.assign(static_cast<std::size_t>(nv), -1);
   for (int c : centres)
-    if (c >= 0 && c < nv && dist[static_cast<std::size_t>(c)] > 0) {
-      dist[static_cast<std::size_t>(c)] = 0;
-      heap.emplace_back(0.0, c);
-      std::push_heap(heap.begin(), heap.end(), later);
+    if (c >= 0 && c < nv && ring[static_cast<std::size_t>(c)] < 0) {
+      ring[static_cast<std::size_t>(c)] = 0;
+      out.vertices.push_back(c);
     }
-  const double r = std::isfinite(radius) ? std::max(radius, 0.0) : 0.0;
-  const bool adjacency = model.adjacency_offset.size() == static_cast<std::size_t>(model.nv) + 1;
-  while (!heap.empty()) {
-    std::pop_heap(heap.begin(), heap.end(), later);
-    const auto [d, v] = heap.back();
-    heap.pop_back();
-    if (d > dist[static_cast<std::size_t>(v)]) continue;  // a stale entry
-    const double u = r > 0 ? d / r : 0;
-    out.vertices.push_back(v);
-    out.weights.push_back((1 - u * u) * (1 - u * u));
-    if (r <= 0 || !adjacency) continue;
-    for (int k = model.adjacency_offset[static_cast<std::size_t>(v)];
-         k < model.adjacency_offset[static_cast<std::size_t>(v) + 1]; ++k) {
-      const int n = model.adjacency[static_cast<std::size_t>(k)];
-      if (n < 0 || n >= nv) continue;
-      const double e = (x[static_cast<std::size_t>(n)] - x[static_cast<std::size_t>(v)]).norm();
-      const double dn = d + (std::isfinite(e) ? e : kFar);
-      if (dn < r && dn < dist[static_cast<std::size_t>(n)]) {
-        dist[static_cast<std::size_t>(n)] = dn;
-        heap.emplace_back(dn, n);
-        std::push_heap(heap.begin(), heap.end(), later);
-      }
+  // out.vertices is the queue: the front part is done, the rest waits, ring by ring.
+  for (std::size_t head = 0; head < out.vertices.size(); ++head) {
+    const int v = out.vertices[head];
+    const int k = ring[static_cast<std::size_t>(v)];
+    if (k >= rings) continue;
+    const int lo = std::max(offset[static_cast<std::size_t>(v)], 0);
+    const int hi = std::min(offset[static_cast<std::size_t>(v) + 1], static_cast<int>(adjacency.size()));
+    for (int e = lo; e < hi; ++e) {
+      const int n = adjacency[static_cast<std::size_t>(e)];
+      if (n < 0 || n >= nv || ring[static_cast<std::size_t>(n)] >= 0) continue;
+      ring[static_cast<std::size_t>(n)] = k + 1;
+      out.vertices.push_back(n);
     }
+  }
+  for (int v : out.vertices) {
+    out.rings.push_back(ring[static_cast<std::size_t>(v)]);
+    out.weights.push_back(patch_weight(out.rings.back(), rings));
   }
 }
 
-template void grow_patch<3>(const Model<3>&, std::span<const Vec<3>>, std::span<const int>, double, Patch&,
-                            PatchScratch&);
-template void grow_patch<4>(const Model<4>&, std::span<const Vec<4>>, std::span<const int>, double, Patch&,
-                            PatchScratch&);
+void mesh_adjacency(std::span<const std::array<int, 3>> triangles, int vertex_count, std::vector<int>& offset,
+                    std::vector<int>& adjacency) {
+  const std::size_t nv = static_cast<std::size_t>(std::max(vertex_count, 0));
+  std::vector<std::vector<int>> adj(nv);
+  for (const auto& t : triangles) {
+    if (std::any_of(t.begin(), t.end(), [&](int c) { return c < 0 || c >= vertex_count; })) continue;
+    for (int c = 0; c < 3; ++c) {
+      adj[static_cast<std::size_t>(t[c])].push_back(t[(c + 1) % 3]);
+      adj[static_cast<std::size_t>(t[(c + 1) % 3])].push_back(t[c]);
+    }
+  }
+  offset.assign(1, 0);
+  adjacency.clear();
+  for (auto& a : adj) {
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    adjacency.insert(adjacency.end(), a.begin(), a.end());
+    offset.push_back(static_cast<int>(adjacency.size()));
+  }
+}
 
 }  // namespace s4d

@@ -122,7 +122,7 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
     for (std::size_t i = 0; i < sc.size(); ++i) {
       const std::string w = "script[" + std::to_string(i) + "]";
       const Json& a = sc[i];
-      c.keys(a, w, {"action", "select", "from", "to", "by", "stiffness", "max_force", "by_hand", "radius"});
+      c.keys(a, w, {"action", "select", "from", "to", "by", "stiffness", "max_force", "by_hand", "rings", "radius"});
       ScriptAction act;
       act.kind = c.text(a.value("action", Json()), w + ".action");
       if (act.kind != "hold" && act.kind != "move" && act.kind != "pull")
@@ -134,7 +134,10 @@ Scenario scenario_of_scene(Scene scene, const std::filesystem::path& origin) {
       act.by = a.contains("by") ? c.vec(a["by"], w + ".by", s.dim) : std::vector<double>(s.dim, 0.0);
       if (a.contains("stiffness")) act.stiffness = c.number(a["stiffness"], w + ".stiffness", 0, 1e9);
       if (a.contains("max_force")) act.max_force = c.number(a["max_force"], w + ".max_force", 0, 1e9);
-      if (a.contains("radius")) act.radius = c.number(a["radius"], w + ".radius", 0, 1e3);
+      if (a.contains("radius"))
+        c.fail(w + ".radius", "a carried patch is counted in rings of mesh edges now: write \"rings\": N (the "
+                              "vertices within N edges of the selected ones)");
+      if (a.contains("rings")) act.rings = c.integer(a["rings"], w + ".rings", 0, 1000);
       if (a.contains("by_hand")) {
         const std::string h = c.text(a["by_hand"], w + ".by_hand");
         if (h == "skip") act.by_hand = ByHand::kSkip;

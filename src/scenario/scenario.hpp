@@ -34,16 +34,16 @@ enum class ByHand {
 
 // A tool as a user would drive it: "hold" pins; "move" pins and carries the vertices by `by`
 // over [from, to] (smooth ramp); "pull" drags them through a force-limited spring to the same
-// moving target (virtual coupling, what a haptic device feels). With a `radius`, the action takes
-// the patch around the selected vertices (physics/patch.hpp: geodesic, weighted), as the Touch
-// tool's carry does: each vertex moves by its weight times `by`.
+// moving target (virtual coupling, what a haptic device feels). With `rings`, the action takes
+// the patch of that many rings of mesh edges around the selected vertices (physics/patch.hpp,
+// weighted), as the Touch tool's carry does: each vertex moves by its weight times `by`.
 struct ScriptAction {
   std::string kind;
   ByHand by_hand = ByHand::kSkip;
   VertexSelection select;
   double from = 0, to = 0;   // s
   std::vector<double> by;    // D numbers, m
-  double radius = 0;         // m along the surface; 0: the selected vertices alone
+  int rings = 0;             // rings of mesh edges around them; 0: the selected vertices alone
   double stiffness = 50;     // N/m per vertex, "pull"
   double max_force = 1;      // N per vertex, "pull"
 };

@@ -59,7 +59,7 @@ ScriptDriver<D>::ScriptDriver(const Scenario& scenario, const SceneWorld<D>& wor
         selected_vertices<D>(scenario, world.first, world.count, world.world.positions(), a.select);
     Patch patch;
     PatchScratch scratch;
-    grow_patch<D>(world.world.model(), world.world.positions(), chosen, a.radius, patch, scratch);
+    grow_patch<D>(world.world.model(), chosen, a.rings, patch, scratch);
     t.vertices = std::move(patch.vertices);
     t.weights = std::move(patch.weights);
     t.start.reserve(t.vertices.size());

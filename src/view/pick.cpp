@@ -67,20 +67,31 @@ std::vector<SheetHit> pick_sheets(const Scene& scene, const Vec3& origin, const 
           hit.distance = h;
           const double b[3] = {1 - u - v, u, v};
           hit.w = b[0] * w[tri[0]] + b[1] * w[tri[1]] + b[2] * w[tri[2]];
-          const int k = static_cast<int>(std::max_element(b, b + 3) - b);
-          hit.vertex = tri[k];
+          // The corner nearest the hit in the shadow; of two as near, the lower index.
+          hit.vertex = tri[0];
+          for (int k = 1; k < 3; ++k) {
+            const double dk = (p[tri[k]] - hit.point).squaredNorm(), db = (p[hit.vertex] - hit.point).squaredNorm();
+            if (dk < db || (dk == db && tri[k] < hit.vertex)) hit.vertex = tri[k];
+          }
           hits.push_back(hit);
         }
       }
     }, scene.objects[o].shape);
   }
-  std::sort(hits.begin(), hits.end(), [](const SheetHit& a, const SheetHit& b) { return a.distance < b.distance; });
+  // Nearest the eye first; ties (a ray through an edge, two sheets crossing there) in a fixed order,
+  // so that the same pixel gives the same list whatever order the triangles came in.
+  std::sort(hits.begin(), hits.end(), [](const SheetHit& a, const SheetHit& b) {
+    if (a.distance != b.distance) return a.distance < b.distance;
+    if (a.object != b.object) return a.object < b.object;
+    return a.triangle < b.triangle;
+  });
   // Hits on a shared edge or vertex come once per triangle: the same place of the same object.
   const double eps = 1e-7 * std::max(scale, 1.0);
   std::vector<SheetHit> merged;
   for (const SheetHit& h : hits) {
-    const bool same = !merged.empty() && merged.back().object == h.object &&
-                      std::abs(merged.back().distance - h.distance) < eps && std::abs(merged.back().w - h.w) < eps;
+    bool same = false;
+    for (auto m = merged.rbegin(); m != merged.rend() && h.distance - m->distance < eps && !same; ++m)
+      same = m->object == h.object && std::abs(m->w - h.w) < eps;
     if (!same) merged.push_back(h);
   }
   return merged;
@@ -143,6 +154,7 @@ std::vector<SheetHit> pick_strands(const Scene& scene, const Camera& camera, con
         const std::size_t k = static_cast<std::size_t>(sc.segment);
         SheetHit h;
         h.object = static_cast<int>(o);
+        h.strand = true;
         h.triangle = sc.segment;
         h.point = pl.seg_a(k) + sc.t * (pl.seg_b(k) - pl.seg_a(k));
         h.distance = (h.point - eye).norm();

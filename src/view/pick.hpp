@@ -16,6 +16,7 @@ struct SheetHit {
   Vec3 point = Vec3::Zero();  // shadow space
   double distance = 0;        // along the ray from its origin
   double w = 0;               // 4D depth of the surface there (0 for objects of R^3)
+  bool strand = false;        // a curve's strand (pick_strands), not a surface's sheet
 };
 
 // The hits of the ray origin + t·dir (t > 0) on the surfaces of `scene` as drawn: objects of

@@ -145,23 +145,23 @@ TEST(ScriptDriver, ABadByHandValueIsRefusedWithThePlace) {
   }
 }
 
-// A move with a radius carries the patch around its vertex, each vertex by its weight, as the
+// A move with rings carries the patch around its vertex, each vertex by its weight, as the
 // Touch tool's carry does (the same physics/patch.hpp).
-TEST(ScriptDriver, AMoveWithARadiusCarriesThePatchByItsWeights) {
+TEST(ScriptDriver, AMoveWithRingsCarriesThePatchByItsWeights) {
   const std::string text = R"({
     "version": 1,
     "objects": [{"name": "cloth", "generator": "cloth", "params": {"n": 5, "size": 1}}],
     "physics": {"gravity": [0, 0, 0, 0]},
     "scenario": {
       "name": "carry", "duration": 1,
-      "script": [{"action": "move", "select": {"object": "cloth", "vertices": [12]}, "radius": 0.6, "from": 0,
+      "script": [{"action": "move", "select": {"object": "cloth", "vertices": [12]}, "rings": 1, "from": 0,
                   "to": 0.1, "by": [0, 0, 0.3, 0]}],
       "verdict": {"kind": "deforms", "object": "cloth", "numbers": {"min_displacement": 0.1}}
     }
   })";
   const Scenario sc = scenario_of_scene(parse_scene(text, "carry.json"), "carry.json");
   ASSERT_EQ(sc.script.size(), 1u);
-  EXPECT_DOUBLE_EQ(sc.script[0].radius, 0.6);
+  EXPECT_EQ(sc.script[0].rings, 1);
   SceneWorld<4> sw = build_world<4>(sc.scene);
   const std::vector<Vec4> start(sw.world.positions().begin(), sw.world.positions().end());
   ScriptDriver<4> script(sc, sw);
@@ -170,17 +170,38 @@ TEST(ScriptDriver, AMoveWithARadiusCarriesThePatchByItsWeights) {
     sw.world.step();
   }
   const auto x = sw.world.positions();
-  // The middle of a 5 x 5 cloth of side 1: neighbours 0.25 away (weight (1 - (0.25/0.6)^2)^2),
-  // two steps 0.5 away, corners beyond 0.6 along the cloth.
-  const double w1 = std::pow(1 - 0.25 * 0.25 / 0.36, 2), w2 = std::pow(1 - 0.25 / 0.36, 2);
+  // The middle of a 5 x 5 cloth: its 6 neighbours along the mesh's edges (ring 1 of 1, weight
+  // (1 - (1/2)^2)^2), nothing two edges away.
   EXPECT_NEAR(x[12].z() - start[12].z(), 0.3, 1e-9);
-  EXPECT_NEAR(x[13].z() - start[13].z(), w1 * 0.3, 1e-9);
-  EXPECT_NEAR(x[14].z() - start[14].z(), w2 * 0.3, 1e-9);
-  EXPECT_FALSE(sw.world.is_pinned(0)) << "a corner is 1.0 along the cloth, outside the patch";
-  EXPECT_TRUE(sw.world.is_pinned(14));
+  EXPECT_NEAR(x[13].z() - start[13].z(), 0.5625 * 0.3, 1e-9);
+  EXPECT_TRUE(sw.world.is_pinned(13));
+  EXPECT_FALSE(sw.world.is_pinned(14)) << "two edges away, outside the patch";
+  int pinned = 0;
+  for (int v = 0; v < 25; ++v) pinned += sw.world.is_pinned(v) ? 1 : 0;
+  EXPECT_EQ(pinned, 7);
   const auto& tool = script.tool_vertices();
   EXPECT_EQ(tool[13], 1);
   EXPECT_EQ(tool[0], 0);
+}
+
+// The old "radius" (scene units along the surface) is refused with what to write instead.
+TEST(ScriptDriver, AMoveWithARadiusIsRefusedWithTheRingsToWrite) {
+  const std::string text = R"({
+    "version": 1,
+    "objects": [{"name": "cloth", "generator": "cloth", "params": {"n": 5, "size": 1}}],
+    "scenario": {
+      "name": "carry", "duration": 1,
+      "script": [{"action": "move", "select": {"object": "cloth", "vertices": [12]}, "radius": 0.6, "from": 0,
+                  "to": 0.1, "by": [0, 0, 0.3, 0]}],
+      "verdict": {"kind": "deforms", "object": "cloth", "numbers": {"min_displacement": 0.1}}
+    }
+  })";
+  try {
+    scenario_of_scene(parse_scene(text, "carry.json"), "carry.json");
+    FAIL() << "taken";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"rings\": N"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -39,9 +39,9 @@ struct Hand {
   Vec<D> target_v = Vec<D>::Zero();     // view coordinates, per s
   Vec<D> weight = Vec<D>::Ones();       // 1 on the view axes the band pulls along
   double k = 0, b = 0, max_force = 0;
-  // Carrying: the patch of this radius (along the surface) around the vertex follows the hand
+  // Carrying: the patch of this many rings of mesh edges around the vertex follows the hand
   // kinematically, each vertex by its weight, and stays held where the hand lets go. 0: the band.
-  double carry_radius = 0;
+  int carry_rings = 0;
   std::uint64_t grab = 0;  // counts the grabs, so that a new grab of the same vertex starts a new patch
 };
 
@@ -355,7 +355,7 @@ class Core {
   // collision handling then sees a hand's motion, and the band shows the lag). Where the hand lets
   // go the patch stays held: a sculptor's local deformation (paper Fig. 12), undone as one step.
   void carry(World<D>& w, double ts) {
-    const bool wants = hand_.vertex >= 0 && hand_.vertex < w.vertex_count() && hand_.carry_radius > 0;
+    const bool wants = hand_.vertex >= 0 && hand_.vertex < w.vertex_count() && hand_.carry_rings > 0;
     if (!wants) {
       carrying_ = false;
       return;
@@ -363,7 +363,7 @@ class Core {
     const auto x = w.positions();
     if (!carrying_ || carry_grab_ != hand_.grab) {  // every new grab counts up, whatever the vertex
       const int centre[] = {hand_.vertex};
-      grow_patch<D>(w.model(), x, centre, hand_.carry_radius, patch_, patch_scratch_);
+      grow_patch<D>(w.model(), centre, hand_.carry_rings, patch_, patch_scratch_);
       carry_start_.clear();
       for (int v : patch_.vertices) {
         carry_start_.push_back(x[static_cast<std::size_t>(v)]);
@@ -387,8 +387,9 @@ class Core {
   void reserve_carry() {
     const Model<D>& m = world_.world.model();
     const std::size_t nv = static_cast<std::size_t>(m.nv);
-    patch_scratch_.reserve(m.nv, m.adjacency.size());
+    patch_scratch_.reserve(m.nv);
     patch_.vertices.reserve(nv);
+    patch_.rings.reserve(nv);
     patch_.weights.reserve(nv);
     carry_start_.reserve(nv);
   }

@@ -66,14 +66,14 @@ struct Grab {
   int vertex = -1;
   GrabMode mode = GrabMode::kShadow;
   Point3 hand{};              // shadow space: where the hand is
-  double carry_radius = 0;    // 0: the rubber band; > 0: the patch that far around the vertex, along
-                              // the surface, follows the hand and stays held where it is let go
+  int carry_rings = 0;        // 0: the rubber band; > 0: the patch of that many rings of mesh edges
+                              // around the vertex follows the hand and stays held where it is let go
 };
 struct GrabNearest {          // what a device's button does: the vertex nearest a point
   Point3 point{};             // shadow space
   double reach = 0;           // scene units
   GrabMode mode = GrabMode::kShadow;
-  double carry_radius = 0;
+  int carry_rings = 0;
 };
 struct Release {};            // a curve (edited like clay) rests where it was left
 struct SetGrabMode {          // re-anchored where the hand and the vertex are now
@@ -81,7 +81,7 @@ struct SetGrabMode {          // re-anchored where the hand and the vertex are n
 };
 struct SetDeviceButton {      // what a device's first button does from now on
   DeviceButton action = DeviceButton::kGrab;
-  double carry_radius = 0;
+  int carry_rings = 0;
 };
 
 // [SECTION] the view and the device

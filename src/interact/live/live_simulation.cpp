@@ -23,7 +23,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
  public:
   LiveSimulation(const Scene& scene, const Scenario* scenario, const LiveOptions& o)
       : options_(o), mapping_(o.mapping), frame4_(o.frame),
-        button_carry_(std::isfinite(o.button_carry) ? std::clamp(o.button_carry, 0.0, kMaxCarryRadius) : 0.0),
+        button_carry_(std::clamp(o.button_carry, 0, kMaxCarryRings)),
         button_action_(o.button) {
     auto core = std::make_unique<Core<D>>(scene, scenario, o.start_playing, o.reset_to);
     nv_ = core->vertex_count();
@@ -179,7 +179,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     out = core_ ? core_->status() : current_->status;
     out.held_vertex = held_;
     out.grab_mode = static_cast<int>(mode_);
-    out.carry_radius = held_ >= 0 ? carry_radius_ : 0;
+    out.carry_rings = held_ >= 0 ? carry_rings_ : 0;
     const auto x = positions();
     if (held_ >= 0 && held_ < static_cast<int>(x.size())) {
       out.band_to = shadow(x[held_]);
@@ -198,13 +198,12 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   // [requests] The hand's, the view's and the sketch's; the World's go on to the core.
   void on(const live::Grab& r) {
     const Vec3 hand = live::vec(r.hand);
-    if (r.vertex >= 0 && r.vertex < nv_ && hand.allFinite() && std::isfinite(r.carry_radius))
-      take(r.vertex, r.mode, r.carry_radius);
+    if (r.vertex >= 0 && r.vertex < nv_ && hand.allFinite()) take(r.vertex, r.mode, r.carry_rings);
   }
   void on(const live::GrabNearest& r) {
-    if (!live::vec(r.point).allFinite() || !std::isfinite(r.reach) || !std::isfinite(r.carry_radius)) return;
+    if (!live::vec(r.point).allFinite() || !std::isfinite(r.reach)) return;
     const int v = nearest(live::vec(r.point), r.reach);
-    if (v >= 0) take(v, r.mode, r.carry_radius);
+    if (v >= 0) take(v, r.mode, r.carry_rings);
   }
   void on(const live::Release& r) {
     held_ = -1;
@@ -235,7 +234,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   }
   void on(const live::SetDeviceButton& r) {
     button_action_ = static_cast<DeviceButton>(std::clamp(static_cast<int>(r.action), 0, 2));
-    button_carry_ = std::isfinite(r.carry_radius) ? std::clamp(r.carry_radius, 0.0, kMaxCarryRadius) : 0.0;
+    button_carry_ = std::clamp(r.carry_rings, 0, kMaxCarryRings);
   }
   void on(const live::Reset& r) {
     held_ = -1;
@@ -398,9 +397,9 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     return best;
   }
 
-  // A new grab of vertex v: on the band, or carrying the patch of `carry_radius` around it.
-  void take(int v, live::GrabMode mode, double carry_radius) {
-    carry_radius_ = std::isfinite(carry_radius) ? std::clamp(carry_radius, 0.0, kMaxCarryRadius) : 0.0;
+  // A new grab of vertex v: on the band, or carrying the patch of `carry_rings` rings around it.
+  void take(int v, live::GrabMode mode, int carry_rings) {
+    carry_rings_ = std::clamp(carry_rings, 0, kMaxCarryRings);
     ++grab_count_;
     grab(v, mode);
   }
@@ -425,7 +424,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     h.k = params_[kBandStiffness].value;
     h.b = params_[kBandDamping].value;
     h.max_force = params_[kBandMaxForce].value;
-    h.carry_radius = carry_radius_;
+    h.carry_rings = carry_rings_;
     h.grab = grab_count_;
     if constexpr (D == 4) h.frame = frame4_.matrix();
     h.target = grab_view_;
@@ -476,7 +475,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
 
   static constexpr double kMaxFeltStiffness = 800;  // N/m: what a desktop arm renders stably
   static constexpr double kGrabReach = 0.01;         // m: how near a device's point grabs a vertex
-  static constexpr double kMaxCarryRadius = 1e3;     // scene units: beyond any scene, a sane bound
+  static constexpr int kMaxCarryRings = 1000;         // beyond any mesh, a sane bound
 
   LiveOptions options_;
   std::unique_ptr<Core<D>> core_;
@@ -490,8 +489,8 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   bool curves_ = false;  // the bodies are curves (a knot: its shadow is the view's plane)
   int held_ = -1;
   live::GrabMode mode_ = live::GrabMode::kShadow;
-  double carry_radius_ = 0;       // of the held vertex's grab: 0 on the band
-  double button_carry_ = 0;       // what a device's button carries (the tool's radius)
+  int carry_rings_ = 0;           // of the held vertex's grab: 0 on the band
+  int button_carry_ = 0;          // what a device's button carries (the tool's rings)
   std::uint64_t grab_count_ = 0;
   Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
   Vec<D> grab_view_ = Vec<D>::Zero();

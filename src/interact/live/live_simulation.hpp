@@ -31,7 +31,7 @@ struct LiveOptions {
   bool async_physics = false;  // step the World on its own thread (the window); false: in the tick
   bool start_playing = true;
   DeviceButton button = DeviceButton::kGrab;  // until a SetDeviceButton request arrives
-  double button_carry = 0;                    // the carry radius of that button (kGrab)
+  int button_carry = 0;                       // the rings that button carries (kGrab; 0: the band)
   // Where Reset goes (copied), when not the scene simulated from now: the start of bodies that
   // were there before an object was added, the new ones as they were added (Session::add_object).
   const Scene* reset_to = nullptr;

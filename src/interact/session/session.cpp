@@ -520,11 +520,11 @@ MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : M
 
 bool Session::send(const live::Request& request) { return loop_ && loop_->send(live::command(request)); }
 
-void Session::set_device_button(DeviceButton action, double carry_radius) {
-  if (action == device_button_ && carry_radius == device_carry_) return;
+void Session::set_device_button(DeviceButton action, int carry_rings) {
+  if (action == device_button_ && carry_rings == device_carry_) return;
   device_button_ = action;
-  device_carry_ = carry_radius;
-  send(live::SetDeviceButton{action, carry_radius});
+  device_carry_ = carry_rings;
+  send(live::SetDeviceButton{action, carry_rings});
 }
 
 void Session::set_device(const std::string& spec) {

@@ -101,7 +101,7 @@ class Session {
   // The knots' image for the curve explorer (false when not simulating).
   bool offer_curve_image(std::unique_ptr<CurveImage> image);
   // What a device's first button does (the active tool's choice); kept across rebuilds.
-  void set_device_button(DeviceButton action, double carry_radius = 0);
+  void set_device_button(DeviceButton action, int carry_rings = 0);
   // Replaces the loop's device (throws s4d::Error with the reason; the old one keeps running).
   void set_device(const std::string& spec);
   const std::string& device_spec() const { return options_.device; }
@@ -180,7 +180,7 @@ class Session {
   std::vector<std::string> body_names_;          // per scene object when the simulation started
   std::map<std::string, Shape> start_shapes_;    // by object name: where Reset puts it
   DeviceButton device_button_ = DeviceButton::kGrab;
-  double device_carry_ = 0;
+  int device_carry_ = 0;
   int dim_ = 0;
   const HapticSnapshot* snapshot_ = nullptr;
   SimulationRates rates_;

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "interact/live/live_simulation.hpp"
 #include "interact/session/session.hpp"
@@ -15,19 +14,23 @@ namespace {
 // A knot's depth is the view's; a surface's shadow ray runs along w.
 const char* along_what(const Session& s) { return s.dimension() == 3 ? "along the depth" : "along w"; }
 
-std::string radius_text(double r) { return std::to_string(r).substr(0, 5); }
-
 }  // namespace
 
 std::string GrabTool::help() const {
-  std::string h = carry_ ? "touch: drag to carry the patch of radius " + radius_text(carry_radius_) +
-                               " (it stays held; [ ] size it, C: pull instead), Alt: along the shadow ray, Tab: next sheet, "
-                               "P / right click: pin"
+  const std::string rings = std::to_string(carry_rings_) + (carry_rings_ == 1 ? " ring" : " rings");
+  std::string h = carry_ ? "touch: drag to carry the patch of " + rings +
+                               " around the vertex (it stays held; [ ] size it, C: pull instead), Alt: along the shadow "
+                               "ray, Tab: next sheet, P / right click: pin"
                          : "touch: drag a surface or a strand to pull it (Alt: along the shadow ray, C: carry a patch), "
                            "Tab: next sheet, P / right click: pin";
-  if (hits_.size() > 1)
-    h = "sheet " + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) + " under the cursor (Tab: next); " + h;
+  if (hits_.size() > 1) h = sheet_text() + "; " + h;
   return h;
+}
+
+std::string GrabTool::sheet_text() const {
+  const bool strand = !hits_.empty() && hits_[static_cast<std::size_t>(sheet_)].strand;
+  return std::string(strand ? "strand " : "sheet ") + std::to_string(sheet_ + 1) + " of " +
+         std::to_string(hits_.size()) + " under the cursor, Tab for the next";
 }
 
 int GrabTool::world_vertex(const SheetHit& h, const Session& s) {
@@ -48,26 +51,72 @@ std::vector<SheetHit> GrabTool::pick(const ToolInput& in, const Session& s) {
   return hits;
 }
 
+void GrabTool::choose(int sheet, const Vec2& cursor) {
+  sheet_ = sheet;
+  const SheetHit& h = hits_[static_cast<std::size_t>(sheet)];
+  choice_ = Choice{cursor, h.object, h.strand ? h.distance : h.w, h.strand};
+}
+
+void GrabTool::take_chosen_sheet(const Vec2& cursor) {
+  sheet_ = 0;  // the sheet nearest the eye, unless a choice made at this pixel says otherwise
+  if (!choice_) return;
+  if ((cursor - choice_->cursor).norm() > kChoicePixels) {
+    choice_.reset();
+    return;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < hits_.size(); ++i) {
+    const SheetHit& h = hits_[i];
+    if (choice_->object >= 0 && h.object != choice_->object) continue;
+    const double d = std::abs((choice_->by_distance ? h.distance : h.w) - choice_->w);
+    if (d < best) {  // strictly nearer: of two as near, the nearer the eye
+      best = d;
+      sheet_ = static_cast<int>(i);
+    }
+  }
+}
+
 void GrabTool::hover(const ToolInput& in, Session& s) {
   hits_ = pick(in, s);
-  if (handle_) {
-    if (hits_.empty()) hits_.push_back(*handle_);
+  if (handle_) {  // a marker is drawn over every sheet: a press on it takes what it marks
+    const SheetHit h = *handle_;
+    std::erase_if(hits_, [&](const SheetHit& o) { return o.object == h.object && o.vertex == h.vertex; });
+    hits_.insert(hits_.begin(), h);
     handle_.reset();
   }
-  right_ = in.view.right;
-  up_ = in.view.up;
-  if ((in.view.cursor - tab_cursor_).norm() > 4) sheet_ = 0;
-  if (sheet_ >= static_cast<int>(hits_.size())) sheet_ = 0;
-  if (std::isfinite(preferred_w_) && !hits_.empty()) {
-    for (std::size_t i = 0; i < hits_.size(); ++i)
-      if (std::abs(hits_[i].w - preferred_w_) < std::abs(hits_[static_cast<std::size_t>(sheet_)].w - preferred_w_))
-        sheet_ = static_cast<int>(i);
-    tab_cursor_ = in.view.cursor;
+  if (std::isfinite(preferred_w_)) {
+    choice_ = Choice{in.view.cursor, -1, preferred_w_, false};
     preferred_w_ = std::numeric_limits<double>::quiet_NaN();
   }
+  take_chosen_sheet(in.view.cursor);
+  update_preview(s);
   // The mouse's hand rests where a press would take hold, so the band starts slack.
   hand_ = hits_.empty() ? in.view.on_plane_through(in.view.centre) : hits_[static_cast<std::size_t>(sheet_)].point;
   s.set_hand(hand_, false);
+}
+
+void GrabTool::update_preview(const Session& s) {
+  preview_.vertices.clear();
+  preview_.rings.clear();
+  preview_.weights.clear();
+  if (!carry_ || hits_.empty()) return;
+  const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
+  const int first = s.first_vertex(h.object);
+  if (first < 0 || h.object >= static_cast<int>(s.scene().objects.size())) return;
+  const auto* surface = std::get_if<Surface<4>>(&s.scene().objects[static_cast<std::size_t>(h.object)].shape);
+  const auto* surface3 = std::get_if<Surface<3>>(&s.scene().objects[static_cast<std::size_t>(h.object)].shape);
+  if (!surface && !surface3) return;  // a curve's patch runs along its segments: the live one shows it
+  const std::vector<Triangle>& tris = surface ? surface->triangles : surface3->triangles;
+  const int nv = static_cast<int>(surface ? surface->vertices.size() : surface3->vertices.size());
+  if (adjacency_object_ != h.object || adjacency_triangles_ != tris ||
+      static_cast<int>(adjacency_offset_.size()) != nv + 1) {
+    mesh_adjacency(tris, nv, adjacency_offset_, adjacency_);
+    adjacency_object_ = h.object;
+    adjacency_triangles_ = tris;
+  }
+  const int centre[] = {h.vertex};
+  grow_patch(adjacency_offset_, adjacency_, centre, carry_rings_, preview_, preview_scratch_);
+  for (int& v : preview_.vertices) v += first;
 }
 
 bool GrabTool::press(const ToolInput& in, Session& s) {
@@ -76,16 +125,22 @@ bool GrabTool::press(const ToolInput& in, Session& s) {
   const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
   const int v = world_vertex(h, s);
   if (v < 0) return false;
+  const std::string sheet = hits_.size() > 1 ? " (" + sheet_text() + ")" : "";
+  choice_.reset();  // a Tab chooses for one press; the next takes the nearest sheet again
   along_w_ = in.alt;
   plane_point_ = h.point;
   hand_ = h.point;
   s.set_hand(hand_, true);
   const std::string how = carry_ ? "carry the patch around vertex " : "drag vertex ";
   s.record(how + std::to_string(v) + (along_w_ ? std::string(" ") + along_what(s) : ""));
-  s.send(live::Grab{v, grab_mode(), live::point(hand_), carry_ ? carry_radius_ : 0});
+  s.send(live::Grab{v, grab_mode(), live::point(hand_), carry_ ? carry_rings_ : 0});
   holding_ = true;
-  message_ = (carry_ ? "carrying the patch around vertex " : "holding vertex ") + std::to_string(v) +
-             (along_w_ ? std::string(" (") + along_what(s) + ")" : "");
+  const std::string patch = carry_ && !preview_.vertices.empty()
+                                ? " (" + std::to_string(preview_.vertices.size()) + " vertices within " +
+                                      std::to_string(carry_rings_) + (carry_rings_ == 1 ? " ring)" : " rings)")
+                                : "";
+  message_ = (carry_ ? "carrying the patch around vertex " : "holding vertex ") + std::to_string(v) + patch +
+             (along_w_ ? std::string(" (") + along_what(s) + ")" : "") + sheet;
   return true;
 }
 
@@ -133,36 +188,37 @@ bool GrabTool::right_click(const ToolInput& in, Session& s) {
   return true;
 }
 
-void GrabTool::set_carry_radius(double r) {
-  if (std::isfinite(r)) carry_radius_ = std::clamp(r, kMinCarryRadius, kMaxCarryRadius);
-}
+void GrabTool::set_carry_rings(int rings) { carry_rings_ = std::clamp(rings, kMinCarryRings, kMaxCarryRings); }
 
 bool GrabTool::key(ToolKey k, const ToolInput& in, Session& s) {
+  const auto rings_text = [&] { return std::to_string(carry_rings_) + (carry_rings_ == 1 ? " ring" : " rings"); };
   if (k == ToolKey::kCarry && !holding_) {
     carry_ = !carry_;
-    message_ = carry_ ? "carry: a drag carries the patch of radius " + radius_text(carry_radius_) +
-                            " around the vertex, and it stays held ([ ] size it)"
+    message_ = carry_ ? "carry: a drag carries the patch of " + rings_text() +
+                            " of edges around the vertex, and it stays held ([ ] size it)"
                       : "pull: a drag pulls one vertex on the rubber band";
     return true;
   }
   if ((k == ToolKey::kSmaller || k == ToolKey::kLarger) && !holding_) {
-    set_carry_radius(carry_radius_ * (k == ToolKey::kLarger ? 1.25 : 0.8));
+    set_carry_rings(carry_rings_ + (k == ToolKey::kLarger ? 1 : -1));
     carry_ = true;
-    message_ = "carry radius " + radius_text(carry_radius_);
+    hover(in, s);
+    message_ = "carry " + rings_text() + " around the vertex" +
+               (preview_.vertices.empty() ? "" : " (" + std::to_string(preview_.vertices.size()) + " vertices here)");
     return true;
   }
   if (k == ToolKey::kTab && !holding_) {
     hover(in, s);
     if (hits_.size() > 1) {
-      sheet_ = (sheet_ + 1) % static_cast<int>(hits_.size());
-      tab_cursor_ = in.view.cursor;
+      choose((sheet_ + 1) % static_cast<int>(hits_.size()), in.view.cursor);
+      update_preview(s);
       hand_ = hits_[static_cast<std::size_t>(sheet_)].point;
       s.set_hand(hand_, false);
       const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
-      const bool strand = !is_surface(s.scene().objects[static_cast<std::size_t>(h.object)].shape);
-      message_ = (strand ? "strand " : "sheet ") + std::to_string(sheet_ + 1) + " of " + std::to_string(hits_.size()) +
-                 (strand ? " (" + std::to_string(h.distance).substr(0, 6) + " from the eye)"
-                         : " (w = " + std::to_string(h.w).substr(0, 6) + ")");
+      message_ = sheet_text() + (h.strand ? " (" + std::to_string(h.distance).substr(0, 6) + " from the eye)"
+                                          : " (w = " + std::to_string(h.w).substr(0, 6) + ")");
+    } else {
+      message_ = hits_.empty() ? "Tab: nothing under the cursor" : "Tab: one sheet under the cursor";
     }
     return true;
   }
@@ -189,14 +245,10 @@ void GrabTool::overlay(Overlay& o, const Session& s) const {
   if (!holding_ && !hits_.empty()) {
     const SheetHit& h = hits_[static_cast<std::size_t>(sheet_)];
     o.dots.push_back({h.point, overlay_colour(1, 1, 1, 0.9), 6, false});
-    if (carry_) {  // the patch's reach (along the surface it is measured; this circle shows its size)
-      constexpr int kSides = 48;
-      for (int i = 0; i < kSides; ++i) {
-        const double a = 2 * std::numbers::pi * i / kSides, b = 2 * std::numbers::pi * (i + 1) / kSides;
-        o.lines.push_back({h.point + carry_radius_ * (std::cos(a) * right_ + std::sin(a) * up_),
-                           h.point + carry_radius_ * (std::cos(b) * right_ + std::sin(b) * up_),
-                           overlay_colour(1, 1, 1, 0.6), 1.5f});
-      }
+    // The patch a press would carry: its vertices, brighter where they go further with the hand.
+    for (std::size_t i = 1; i < preview_.vertices.size(); ++i) {
+      const Vec3 p = s.vertex_shadow(preview_.vertices[i]);
+      if (p.allFinite()) o.dots.push_back({p, overlay_colour(1, 1, 1, 0.25 + 0.6 * preview_.weights[i]), 2.5f, true});
     }
     for (std::size_t i = 0; i < hits_.size(); ++i)
       if (static_cast<int>(i) != sheet_) o.dots.push_back({hits_[i].point, overlay_colour(1, 1, 1, 0.35), 3, false});

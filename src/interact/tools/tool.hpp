@@ -102,8 +102,8 @@ class Tool {
   // Each frame, after the session's refresh: keep up with the simulation (the device's point).
   virtual void update(const ToolInput&, Session&) {}
   virtual DeviceButton device_button() const { return DeviceButton::kNone; }
-  // With kGrab: the radius of the patch a device's button carries (0: the rubber band).
-  virtual double device_carry_radius() const { return 0; }
+  // With kGrab: the rings of the patch a device's button carries (0: the rubber band).
+  virtual int device_carry_rings() const { return 0; }
   virtual void overlay(Overlay&, const Session&) const {}
   // A status message for the window (what just happened), taken once.
   std::string take_message() { return std::exchange(message_, std::string()); }

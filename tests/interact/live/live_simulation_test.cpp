@@ -733,33 +733,32 @@ TEST(LiveSimulation, TheDeviceButtonDoesWhatTheToolDoes) {
   EXPECT_FALSE(none.exploring);
 }
 
-// Fig. 12's local deformations: with a carry radius the device's button carries the patch around
+// Fig. 12's local deformations: with carry rings the device's button carries the patch around
 // the vertex kinematically (its centre exactly with the hand, the rest by its weight), and the
-// patch stays held where the button lets go; the band's one vertex (radius 0) springs back.
+// patch stays held where the button lets go; the band's one vertex (0 rings) springs back.
 TEST(LiveSimulation, ACarriedPatchFollowsTheHandAndStaysWhereItIsLetGo) {
   const Scene scene = cloth_scene(12, false);
   const auto& start = std::get<Surface<4>>(scene.objects[0].shape).vertices;
   const int v = 5 * 12 + 6, neighbour = v + 1, far = 0;
-  const double spacing = 1.0 / 11, radius = 2.5 * spacing;
+  const int rings = 2;
   const DeviceMapping m = unit_mapping();
   const Vec3 d0 = m.to_device(start[v].head<3>());
   Trajectory t = pull(d0, d0 + Vec3(0, 0, 0.02), 1, 50, 500, 1500);  // 0.25 toward the eye
   for (std::size_t i = 1200; i < t.ticks.size(); ++i) t.ticks[i].buttons = 0;  // let go
   LiveOptions lo;
-  lo.button_carry = radius;
+  lo.button_carry = rings;
   Rig rig(scene, std::make_unique<ReplayDevice>(std::move(t), false), lo);
   rig.loop->run_ticks(1100);
   const SceneStatus held = rig.snap().status;
   EXPECT_EQ(held.held_vertex, v);
-  EXPECT_DOUBLE_EQ(held.carry_radius, radius);
+  EXPECT_EQ(held.carry_rings, rings);
   const std::vector<Vec4> x = positions(rig.snap());
   EXPECT_NEAR(x[v].z() - start[v].z(), 0.25, 0.01) << "the centre goes with the hand";
-  const double w = (1 - 1 / 6.25) * (1 - 1 / 6.25);  // the neighbour one spacing away: (1 - (1/2.5)^2)^2
+  const double w = (1 - 1 / 9.0) * (1 - 1 / 9.0);  // the neighbour, ring 1 of 2: (1 - (1/3)^2)^2
   EXPECT_NEAR(x[neighbour].z() - start[neighbour].z(), w * 0.25, 0.01) << "its neighbour by its weight";
   int pinned = 0;
   for (std::size_t i = 0; i < rig.snap().flags.size(); ++i) pinned += rig.snap().flags[i] & 1;
-  EXPECT_GT(pinned, 8) << "the patch is held, not one vertex";
-  EXPECT_LT(pinned, 40);
+  EXPECT_EQ(pinned, 19) << "the patch is held: 1 + 6 + 12 vertices, two rings of the triangulated grid";
   EXPECT_EQ(rig.snap().flags[far] & 1, 0) << "outside the patch nothing is held";
   rig.loop->run_ticks(900);  // the button is up
   EXPECT_EQ(rig.snap().status.held_vertex, -1);

@@ -2,6 +2,8 @@
 // order, Tab reaches each, and a press holds the vertex of the sheet chosen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "interact/tools/grab_tool.hpp"
 #include "view/pick.hpp"
 #include "interact/session/session.hpp"
@@ -57,6 +59,50 @@ TEST(Pick, ObjectsOfR4AreSeenThroughTheFrame) {
   EXPECT_NEAR(std::abs(hits[0].point.z()), 0.5, 1e-12) << "the sheets are now 1 apart along the line of sight";
 }
 
+// Issue 34: the same pixel gives the same vertex. The hits do not depend on the order the mesh
+// lists its triangles (or their corners) in, and the vertex taken is the hit triangle's corner
+// nearest the hit, on the Clifford torus seen as the pinch scenario sees it (its shadow folds
+// two and four sheets onto each other).
+TEST(Pick, TheSameRayGivesTheSameSheetsWhateverTheMeshsOrder) {
+  Scene a;
+  SceneObject o;
+  o.name = "torus";
+  o.shape = generate("clifford-torus", {{"n", 24}, {"m", 24}});
+  a.objects.push_back(o);
+  a.frame.rotate(Plane{2, 3}, 1.5707963267948966);
+  a.frame.rotate(Plane{1, 3}, 0.2617993877991494);
+  Scene b = a;
+  auto& tris = std::get<Surface<4>>(b.objects[0].shape).triangles;
+  std::reverse(tris.begin(), tris.end());
+  for (auto& t : tris) std::rotate(t.begin(), t.begin() + 1, t.end());
+  const auto& p = std::get<Surface<4>>(a.objects[0].shape).vertices;
+  int rays = 0, layered = 0;
+  for (double x = -1.4; x <= 1.4; x += 0.1)
+    for (double y = -1.4; y <= 1.4; y += 0.1) {
+      const Vec3 eye(x, y, 6), dir(0.01, -0.02, -1);
+      const auto ha = pick_sheets(a, eye, dir), hb = pick_sheets(b, eye, dir), again = pick_sheets(a, eye, dir);
+      ASSERT_EQ(ha.size(), hb.size());
+      ASSERT_EQ(ha.size(), again.size());
+      rays += !ha.empty();
+      layered += ha.size() > 1;
+      for (std::size_t i = 0; i < ha.size(); ++i) {
+        EXPECT_EQ(ha[i].vertex, hb[i].vertex) << x << " " << y << " hit " << i;
+        EXPECT_EQ(ha[i].vertex, again[i].vertex);
+        EXPECT_NEAR(ha[i].distance, hb[i].distance, 1e-9);
+        if (i > 0) {
+          EXPECT_LE(ha[i - 1].distance, ha[i].distance) << "nearest the eye first";
+        }
+        const Vec3 at = a.frame.to_view(p[static_cast<std::size_t>(ha[i].vertex)]).head<3>();
+        for (int c : std::get<Surface<4>>(a.objects[0].shape).triangles[static_cast<std::size_t>(ha[i].triangle)]) {
+          const Vec3 q = a.frame.to_view(p[static_cast<std::size_t>(c)]).head<3>();
+          EXPECT_LE((at - ha[i].point).norm(), (q - ha[i].point).norm() + 1e-12) << "the nearest corner";
+        }
+      }
+    }
+  EXPECT_GT(rays, 150);
+  EXPECT_GT(layered, 100) << "most rays cross several sheets";
+}
+
 TEST(GrabTool, TabReachesEverySheetAndThePressHoldsTheChosenOne) {
   Document d;
   d.scene = two_sheets();
@@ -108,6 +154,55 @@ TEST(GrabTool, TabReachesEverySheetAndThePressHoldsTheChosenOne) {
   // Away from the surfaces a press is no grab: the view turns instead.
   in.view.eye = Vec3(4, 4, 5);
   EXPECT_FALSE(tool.press(in, session));
+}
+
+// Issue 34: a press takes the sheet nearest the eye, the same every time at the same pixel; Tab
+// chooses another for the next press only, and the status says which of how many it is.
+TEST(GrabTool, APressTakesTheNearestSheetEveryTimeAndTabChoosesForOnePress) {
+  Document d;
+  d.scene = two_sheets();
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  Session session;
+  session.open(std::move(d), o);
+  ASSERT_TRUE(session.simulating()) << session.physics_error();
+  session.loop()->run_ticks(1);
+  session.refresh();
+  ToolInput in;
+  in.view.eye = Vec3(0.1, 0.1, 5);
+  in.view.ray = Vec3(0, 0, -1);
+  in.view.cursor = Vec2(100, 100);
+  ToolInput away = in;
+  away.view.eye = Vec3(-0.3, 0.2, 5);
+  away.view.cursor = Vec2(60, 110);
+  GrabTool tool;
+  auto press_and_release = [&](const ToolInput& at) {
+    EXPECT_TRUE(tool.press(at, session));
+    session.loop()->run_ticks(2);
+    session.refresh();
+    const int held = session.snapshot()->status.held_vertex;
+    tool.release(at, session);
+    session.loop()->run_ticks(1);
+    session.refresh();
+    return held;
+  };
+  const int first = press_and_release(in);
+  EXPECT_EQ(session.object_of_vertex(first), 0) << "the upper sheet, nearer the eye";
+  for (int k = 0; k < 3; ++k) {
+    tool.hover(away, session);
+    tool.key(ToolKey::kTab, away, session);  // a choice made elsewhere is not this pixel's
+    tool.hover(in, session);
+    EXPECT_EQ(press_and_release(in), first) << "the same vertex every time at the same pixel";
+  }
+  tool.hover(in, session);
+  EXPECT_NE(tool.help().find("sheet 1 of 2 under the cursor"), std::string::npos) << tool.help();
+  tool.key(ToolKey::kTab, in, session);
+  EXPECT_NE(tool.take_message().find("sheet 2 of 2 under the cursor"), std::string::npos);
+  EXPECT_NE(tool.help().find("sheet 2 of 2 under the cursor"), std::string::npos) << tool.help();
+  const int lower = press_and_release(in);
+  EXPECT_EQ(session.object_of_vertex(lower), 1) << "Tab chose the lower sheet for this press";
+  EXPECT_EQ(press_and_release(in), first) << "and the next press takes the nearest again";
 }
 
 // A knot's strands are picked on the screen: within a few pixels of the cursor, one hit a strand,
