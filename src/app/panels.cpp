@@ -139,7 +139,10 @@ void Panels::open(GuiModel& model, Document doc) {
   const bool scene_file = spec.size() > 5 && spec.ends_with(".json");
   const bool scenario = doc.scenario.has_value();
   SessionOptions options = model.session_options;
-  options.start_playing = !scenario;  // a scenario opens paused in its start state
+  // A scenario opens paused in its start state; so does a scene under gravity with nothing
+  // pinned (none can pin at open), which would otherwise fall out of view before it is seen.
+  const bool would_fall = !scenario && doc.scene.physics.gravity.norm() > 0;
+  options.start_playing = !scenario && !would_fall;
   model.session.open(std::move(doc), options);
   model.start_page = false;
   model.view.reset(model.scene());
@@ -147,6 +150,9 @@ void Panels::open(GuiModel& model, Document doc) {
     model.view.turn_to_generic_view();
   model.fit = fit_of(model.scene());
   model.status = "opened " + spec;  // its instruction is in the band above the view
+  if (would_fall && model.session.simulating())
+    model.status += ": paused, since under gravity with nothing pinned everything falls (Space plays; "
+                    "Simulation > Pin the top holds it up)";
   if (!model.session.physics_error().empty())
     model.status += " (not simulated: " + model.session.physics_error() + ")";
   if (!model.session.device_error().empty()) model.error = model.session.device_error();
