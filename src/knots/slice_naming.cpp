@@ -6,12 +6,17 @@
 namespace s4d {
 
 std::string SliceNaming::headline() const {
-  std::string s = name;
+  std::string s = label;
   if (!error.empty()) return s + ": " + error;
   if (components > 0 && !proven) s += "  [not proven]";
-  if (components > 1 || open_components > 0) s += "  (" + std::to_string(components) + " components";
-  if (open_components > 0) s += ", " + std::to_string(open_components) + " open arc" + (open_components > 1 ? "s" : "");
-  if (components > 1 || open_components > 0) s += ")";
+  if (components > 1) {
+    s += "  linking numbers";
+    for (std::size_t i = 0; i < linking.size(); ++i)
+      for (std::size_t j = i + 1; j < linking[i].size(); ++j)
+        s += " lk(" + std::to_string(i) + "," + std::to_string(j) + ")=" + std::to_string(linking[i][j]);
+  }
+  if (open_components > 0)
+    s += "  (" + std::to_string(open_components) + " open arc" + (open_components > 1 ? "s" : "") + ")";
   return s;
 }
 
@@ -27,7 +32,7 @@ SliceNaming name_slice(const Curve<3>& slice, double level, const NamingOptions&
   }
   out.components = static_cast<int>(closed.components.size());
   if (closed.components.empty()) {
-    out.name = out.open_components > 0 ? "open arcs only" : "empty";
+    out.name = out.label = out.open_components > 0 ? "open arcs only" : "empty";
     out.proven = true;
     return out;
   }
@@ -38,8 +43,19 @@ SliceNaming name_slice(const Curve<3>& slice, double level, const NamingOptions&
     out.candidates = naming.candidates();
     out.linking = naming.identification.invariants.linking;
     out.decided_by = naming.decided_by;
+    const std::string& link_name = naming.identification.link_name;
+    if (!link_name.empty()) {
+      out.label = link_name;
+    } else if (out.candidates.size() == 1) {
+      out.label = out.candidates[0];
+    } else if (!out.candidates.empty()) {
+      out.label = "one of:";
+      for (std::size_t i = 0; i < out.candidates.size(); ++i) out.label += (i ? ", " : " ") + out.candidates[i];
+    } else {
+      out.label = out.name;
+    }
   } catch (const Error& e) {
-    out.name = "not named";
+    out.name = out.label = "not named";
     out.error = e.what();
   }
   return out;

@@ -14,13 +14,15 @@ struct SliceNaming {
   double level = 0;
   int components = 0;       // closed curves of the slice
   int open_components = 0;  // arcs ending on the surface's boundary (not named)
-  std::string name;         // "empty", "unknot", "3_1 # 3_1 mirror", "unlink of 2 components", ...
+  std::string name;         // name_knot's name: "3_1 # 3_1 mirror", "unlink of 2 components: ...", "empty"
+  std::string label;        // the short form for a picture: "3_1 # 3_1 mirror", "unlink of 2 components"
   bool proven = false;
   std::vector<std::string> candidates;        // every answer still possible
   std::vector<std::vector<int>> linking;      // components × components
   std::vector<std::string> decided_by;        // what decided the name
   std::string error;                          // why the slice could not be named ("" when it was)
-  // One line: "3_1 # 3_1 mirror  (1 component)", with "[not proven]" as name_knot's headline.
+  // One line: the label, "[not proven]" when other answers remain, a link's linking numbers
+  // ("unlink of 2 components  linking numbers lk(0,1)=0") and the open arcs.
   std::string headline() const;
 };
 
