@@ -39,8 +39,6 @@ struct SliceArgs {
   ViewOptions view;
 };
 
-const Vec3f kSliceColour{1.0f, 0.72f, 0.1f};
-
 std::string level_text(double c) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%+.3f", c);
@@ -108,9 +106,7 @@ void run_slice(const SliceArgs& a) {
   const BoundingSphere ball = build_scene_geometry(scene, static_cast<double>(w) / h).bounds;
   base.view.fit_centre = ball.centre;
   base.view.fit_radius = ball.radius;
-  if (!a.view.opacity) base.view.opacity = 0.3;
-  if (!a.view.tube_radius) base.view.tube_radius *= 1.5;
-  base.view.depth_colour = false;  // the slice in one bright colour on grey surfaces
+  base.view.slice = true;  // drawn as the window draws it: amber tubes over the faded surfaces
 
   fs::create_directories(a.out);
   NamingOptions naming;
@@ -127,8 +123,7 @@ void run_slice(const SliceArgs& a) {
     const SceneSlice slice = scene_slice(scene, c);
     const SliceNaming n = name_slice(slice.curve, c, naming);
     Scene shot = base;
-    shot.objects.push_back(slice_object(slice, scene.frame, "slice"));
-    shot.objects.back().colour = kSliceColour;
+    shot.view.slice_level = c;
     target.bind();
     renderer.draw(shot, w, h);
     frames.push_back(target.resolve_and_read());
@@ -138,6 +133,7 @@ void run_slice(const SliceArgs& a) {
     std::string svg;
     if (!slice.curve.components.empty()) {
       Scene flat = base;
+      flat.view.slice = false;
       flat.objects = {slice_object(slice, scene.frame, "slice")};
       char name[32];
       std::snprintf(name, sizeof name, "slice-%0*d.svg", digits, static_cast<int>(i));

@@ -8,6 +8,7 @@
 
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
+#include "app/slice_panel.hpp"
 #include "app/tool_registry.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "interact/tools/view_edit.hpp"
@@ -53,6 +54,7 @@ void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const
     model.touch_and_sound_only = !model.touch_and_sound_only;
     model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
   }
+  if (in.key_pressed(GLFW_KEY_W) && !in.ctrl()) toggle_slice(model);  // the slice w = c (Slice panel)
   if (in.key_pressed(GLFW_KEY_L) && !r.tool_drag) Panels::toggle_relax(model);  // the knot energy, live
   if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
     session.record("change the drawing");
@@ -123,7 +125,8 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
   right_and_middle(model, r, in, ti, captured, knots);
   if (!captured) {
-    if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
+    if (in.wheel() != 0 && in.alt() && model.scene().view.slice) step_slice(model, in.wheel());
+    else if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
     if (in.pressed(0)) {
       // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
       // "below"; otherwise a press on a surface goes to the tool.

@@ -20,6 +20,15 @@ std::string SliceNaming::headline() const {
   return s;
 }
 
+std::string short_knot_name(const KnotIdentification& id, const std::vector<std::string>& candidates) {
+  if (!id.link_name.empty()) return id.link_name;
+  if (candidates.size() == 1) return candidates[0];
+  if (candidates.empty()) return id.name;
+  std::string s = "one of:";
+  for (std::size_t i = 0; i < candidates.size(); ++i) s += (i ? ", " : " ") + candidates[i];
+  return s;
+}
+
 SliceNaming name_slice(const Curve<3>& slice, double level, const NamingOptions& options) {
   SliceNaming out;
   out.level = level;
@@ -43,17 +52,7 @@ SliceNaming name_slice(const Curve<3>& slice, double level, const NamingOptions&
     out.candidates = naming.candidates();
     out.linking = naming.identification.invariants.linking;
     out.decided_by = naming.decided_by;
-    const std::string& link_name = naming.identification.link_name;
-    if (!link_name.empty()) {
-      out.label = link_name;
-    } else if (out.candidates.size() == 1) {
-      out.label = out.candidates[0];
-    } else if (!out.candidates.empty()) {
-      out.label = "one of:";
-      for (std::size_t i = 0; i < out.candidates.size(); ++i) out.label += (i ? ", " : " ") + out.candidates[i];
-    } else {
-      out.label = out.name;
-    }
+    out.label = short_knot_name(naming.identification, out.candidates);
   } catch (const Error& e) {
     out.name = out.label = "not named";
     out.error = e.what();

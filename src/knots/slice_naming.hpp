@@ -26,6 +26,10 @@ struct SliceNaming {
   std::string headline() const;
 };
 
+// A name's short form for a picture or a panel's line: a link's well-known name ("unlink of 2
+// components"), else the one answer left, else "one of: a, b"; the full name when none applies.
+std::string short_knot_name(const KnotIdentification& id, const std::vector<std::string>& candidates);
+
 // Names the closed components of `slice` (shadow coordinates, drawn as the identity view sees
 // them); open arcs are counted, not named. Never throws for a slice the naming refuses (a curve
 // too small or too tangled for a diagram): `error` says why and `name` is "not named".
