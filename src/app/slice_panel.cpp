@@ -73,7 +73,8 @@ void step_slice(GuiModel& model, double notches) {
   ViewSettings& v = model.scene().view;
   if (!v.slice || !std::isfinite(notches)) return;
   const auto [lo, hi] = scene_depth_range(model.scene());
-  v.slice_level = std::clamp(v.slice_level + notches * (hi - lo) / 40, lo, hi);
+  const double from = std::isfinite(v.slice_level) ? v.slice_level : 0.5 * (lo + hi);
+  v.slice_level = std::clamp(from + notches * (hi - lo) / 40, lo, hi);
   model.status = "slice w = " + level_text(v.slice_level);
 }
 
@@ -168,7 +169,7 @@ void SlicePanel::draw(GuiModel& model, const Camera& camera) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the surfaces cut by the hyperplane w = c of the 4D view: a link of R^3, drawn on the\n"
                       "shadow in amber and named live; Alt+wheel over the view moves c");
-  float level = static_cast<float>(v.slice_level);
+  float level = static_cast<float>(std::isfinite(v.slice_level) ? v.slice_level : 0.5 * (lo + hi));
   if (ImGui::SliderFloat("c", &level, static_cast<float>(lo), static_cast<float>(hi), "%.3f")) {
     v.slice_level = level;
     if (!v.slice) toggle_slice(model);
@@ -265,6 +266,16 @@ void SlicePanel::movie_strip(GuiModel& model, const Camera& camera, double lo, d
     });
   }
 
+  // The frames share one framing: the box of every frame's slice as the view's camera sees it.
+  Vec2 box_lo = Vec2::Constant(1e300), box_hi = Vec2::Constant(-1e300);
+  for (const SceneSlice& sl : slices)
+    for (const Polyline<3>& line : sl.curve.components)
+      for (const Vec3& p : line.points) {
+        const Vec2 q = screen_point(camera, p);
+        box_lo = box_lo.cwiseMin(q);
+        box_hi = box_hi.cwiseMax(q);
+      }
+  if (!(box_hi.x() > box_lo.x())) box_lo = Vec2(-camera.aspect, -1), box_hi = Vec2(camera.aspect, 1);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float avail = ImGui::GetContentRegionAvail().x;
   const float gap = 4 * ImGui::GetIO().FontGlobalScale;
@@ -288,12 +299,14 @@ void SlicePanel::movie_strip(GuiModel& model, const Camera& camera, double lo, d
     const bool current = v.slice && std::abs(v.slice_level - movie_levels_[i]) < 1e-9 * std::max(1.0, hi - lo);
     dl->AddRectFilled(at, ImVec2(at.x + w, at.y + hgt), IM_COL32(24, 26, 32, 255));
     dl->AddRect(at, ImVec2(at.x + w, at.y + hgt), current ? IM_COL32(255, 140, 0, 255) : IM_COL32(70, 74, 84, 255));
+    const Vec2 mid = 0.5 * (box_lo + box_hi);
+    const double scale = 0.9 * std::min(w / (box_hi.x() - box_lo.x()), hgt / std::max(box_hi.y() - box_lo.y(), 1e-12));
     for (const Polyline<3>& line : slices[i].curve.components) {
       std::vector<ImVec2> pts;
       for (const Vec3& p : line.points) {
-        const Vec2 s = screen_point(camera, p);  // x in ±aspect, y in ±1, y up
-        pts.emplace_back(at.x + w * static_cast<float>(0.5 + 0.5 * s.x() / camera.aspect),
-                         at.y + hgt * static_cast<float>(0.5 - 0.5 * s.y()));
+        const Vec2 q = screen_point(camera, p) - mid;  // screen coordinates, y up
+        pts.emplace_back(at.x + 0.5f * w + static_cast<float>(scale * q.x()),
+                         at.y + 0.5f * hgt - static_cast<float>(scale * q.y()));
       }
       dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), IM_COL32(255, 140, 0, 255),
                       line.closed ? ImDrawFlags_Closed : ImDrawFlags_None, 1.5f);

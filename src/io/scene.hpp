@@ -3,6 +3,7 @@
 // the scene file), the 4D frame, the view, and the physics parameters.
 #pragma once
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,7 +84,7 @@ struct ViewSettings {
   // with slice_fade the surfaces are drawn at most kSliceFadeOpacity opaque behind it. Not stored
   // in scene files (the window's Slice panel, `render --slice W`, `slice`).
   bool slice = false;
-  double slice_level = 0;
+  double slice_level = std::numeric_limits<double>::quiet_NaN();  // NaN: not chosen (the window takes the middle)
   bool slice_fade = true;
 };
 inline constexpr double kSliceFadeOpacity = 0.3;

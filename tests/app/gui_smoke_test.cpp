@@ -1193,6 +1193,18 @@ TEST(GuiSmoke, TheSlicePanelNamesTheSpunTrefoilsMiddleSlice) {
   const int before = amber_pixels(read_png(dir / "start" / "shot.png"));
   EXPECT_GT(amber_pixels(read_png(dir / "on" / "shot.png")), before + 3000) << "the slice is drawn";
 
+  // The movie strip: nine frames named; a click on the last sets the level there.
+  ASSERT_TRUE(panel["buttons"].contains("Movie")) << panel;
+  const auto strip = on + click(30, panel["buttons"]["Movie"]) + std::vector<std::string>{"40 wait", "46 wait"};
+  const auto movie = slice_run(dir / "movie", strip)["slice_panel"]["movie"];
+  ASSERT_EQ(movie.size(), 9u) << movie;
+  EXPECT_EQ(movie[4]["name"].get<std::string>(), "3_1 # 3_1 mirror") << movie;
+  ASSERT_TRUE(movie[8].contains("name")) << movie;
+  const auto picked = slice_run(dir / "picked", strip + click(50, movie[8]["rect"]) + std::vector<std::string>{"60 wait"});
+  EXPECT_DOUBLE_EQ(picked["slice_panel"]["level"].get<double>(), movie[8]["level"].get<double>());
+  EXPECT_EQ(picked["slice_panel"]["name"].get<std::string>().rfind(movie[8]["name"].get<std::string>(), 0), 0u)
+      << picked["slice_panel"] << movie[8];
+
   const auto hidden = slice_run(dir / "hidden", on + std::vector<std::string>{"30 key W", "34 wait"});
   EXPECT_FALSE(hidden["slice_panel"]["on"].get<bool>());
   EXPECT_LT(amber_pixels(read_png(dir / "hidden" / "shot.png")), before + 100);
