@@ -161,7 +161,9 @@ void SlicePanel::draw(GuiModel& model, const Camera& camera) {
   }
   on_ = v.slice;
   level_ = v.slice_level;
-  if (!model.dock.begin(Side::kRight, "Slice", nullptr, true)) return;
+  // Only while the slice shows (the status line's Slice button, W, View > Slice turn it on), so
+  // that the view keeps its room otherwise.
+  if (!v.slice || !model.dock.begin(Side::kRight, "Slice")) return;
   drawn_ = true;
   bool on = v.slice;
   if (ImGui::Checkbox("slice by w = c (W)", &on)) toggle_slice(model);

@@ -1,4 +1,5 @@
-// The Slice panel (issue 37): the slice of the scene's surfaces of R^4 by the hyperplane w = c of
+// The Slice panel (issue 37), shown while the slice is on (the status line's Slice button, W, View >
+// Slice by w = c): the slice of the scene's surfaces of R^4 by the hyperplane w = c of
 // the 4D view, which the renderer draws over the faded surfaces (view.slice), named live as a link
 // off the UI thread (the Knot panel's worker, the one naming), with its level (slider, Alt+wheel,
 // a sweep that animates it), the critical levels, a button that makes it a curve of the scene (one
@@ -51,7 +52,7 @@ class SlicePanel {
   std::size_t submitted_hash_ = 0;
   std::uint64_t submitted_ = 0;
   std::shared_ptr<const KnotInfoWorker::Result> shown_;
-  bool drawn_ = false;      // the panel showed this frame
+  bool drawn_ = false;      // the panel was open this frame
   bool on_ = false;
   double level_ = 0;
   int components_ = 0, open_ = 0;

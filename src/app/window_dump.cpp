@@ -190,6 +190,8 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
   j["knot_panels"] = knot_panels;
   Json slice_panel = Json::object();
   slice.dump(slice_panel);
+  const Rect& sb = model.slice_button;
+  if (!sb.empty()) slice_panel["buttons"]["Slice (W)"] = {sb.x, sb.y, sb.right(), sb.bottom()};
   j["slice_panel"] = slice_panel;
   j["restore_offered"] = model.pending_restore.has_value();
   j["history"] = model.session.history().done_labels();

@@ -193,6 +193,19 @@ void status_line(GuiModel& model) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
     ImGui::SameLine();
   }
+  model.slice_button = Rect{};
+  if (has_4d_surfaces(model.scene())) {  // the slice w = c: not a tool, a way of looking, lit while on
+    const bool on = model.scene().view.slice;
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    if (ImGui::SmallButton("Slice (W)")) toggle_slice(model);
+    if (on) ImGui::PopStyleColor();
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    model.slice_button = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the surfaces cut by the hyperplane w = c of the 4D view, drawn on the shadow and named\n"
+                        "as a link in the Slice panel (Alt+wheel moves c)");
+    ImGui::SameLine();
+  }
   ImGui::TextDisabled("|");
   ImGui::SameLine();
   const float room = ImGui::GetContentRegionAvail().x;
