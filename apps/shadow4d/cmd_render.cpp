@@ -1,6 +1,8 @@
 // `shadow4d render`: draws a scene, file or generated object to a PNG without a display, and writes
 // the crossing diagram of the same view as SVG or TikZ (no OpenGL needed for those).
+#include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "command.hpp"
 #include "core/error.hpp"
@@ -19,6 +21,7 @@ struct RenderArgs {
   std::string out;
   std::string svg;
   std::string tikz;
+  std::optional<double> slice;
   ViewOptions view;
 };
 
@@ -37,6 +40,9 @@ const CommandRegistrar kRender(
                      "write the crossing diagram of the view (the curves' strands with a gap in the "
                      "under strand at each crossing, in the picture's pixels) as SVG, whatever --mode");
       sub.add_option("--tikz", args->tikz, "write the same diagram as a LaTeX tikzpicture of \\draw commands");
+      sub.add_option("--slice", args->slice,
+                     "draw the slice of the R^4 surfaces by the hyperplane w = W of the 4D view (as amber "
+                     "tubes over the faded surfaces; `shadow4d slice` draws and names a whole movie)");
       args->view.add_to(sub);
       sub.callback([args] {
         if (args->out.empty() && args->svg.empty() && args->tikz.empty())
@@ -44,6 +50,11 @@ const CommandRegistrar kRender(
         Scene scene = load_scene_or_object(args->input);
         args->view.apply(scene);
         std::cout << "view: " << args->view.described(args->input) << "\n";
+        if (args->slice) {
+          if (!std::isfinite(*args->slice)) throw Error("render: --slice needs a finite level w");
+          scene.view.slice = true;
+          scene.view.slice_level = *args->slice;
+        }
         const auto [w, h] = args->view.parsed_size();
         if (!args->out.empty()) {
           IntersectionSummary drawn;

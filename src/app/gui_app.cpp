@@ -27,6 +27,7 @@
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
 #include "app/screen.hpp"
+#include "app/slice_panel.hpp"
 #include "app/start_page.hpp"
 #include "app/tool_registry.hpp"
 #include "app/tool_settings.hpp"
@@ -240,7 +241,8 @@ class GuiApp {
       draw_scene_and_shots(last);
       if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
       model_.knot_panel_name = knot_panels_.shown_name();
-      for (const std::string& path : dumps_) dump_state(model_, knot_panels_, hints_, path, renderer_.camera(), frame);
+      for (const std::string& path : dumps_)
+        dump_state(model_, knot_panels_, slice_panel_, hints_, path, renderer_.camera(), frame);
       dumps_.clear();
       glfwSwapBuffers(window_);
       if (last) break;
@@ -316,7 +318,7 @@ class GuiApp {
   // a `wait` holds for the panels' background work.
   void take_script_events() {
     const bool timed_out = std::chrono::steady_clock::now() - wait_start_ > std::chrono::seconds(60);
-    if (waiting_ && (!knot_panels_.busy() || timed_out)) waiting_ = false;
+    if (waiting_ && ((!knot_panels_.busy() && !slice_panel_.busy()) || timed_out)) waiting_ = false;
     if (wait_until_ >= 0) {
       const HapticSnapshot* snap = model_.session.snapshot();
       if (timed_out || (snap && snap->status.sim_time >= wait_until_)) wait_until_ = -1;
@@ -469,6 +471,7 @@ class GuiApp {
     }
     start_loaded_ = false;  // read again (the recent files) when it comes back
     knot_panels_.draw(model_, Frame<3>(camera.orientation.normalized().toRotationMatrix()));
+    slice_panel_.draw(model_, camera);
     if (model_.open_knot_table) {
       model_.open_knot_table = false;
       knot_panels_.open_table();
@@ -545,6 +548,7 @@ class GuiApp {
   Panels panels_;
   HapticsWindow haptics_;
   KnotPanels knot_panels_;
+  SlicePanel slice_panel_;
   GuiModel model_;
   StartPage start_page_;
   HintMarkers hints_;

@@ -3,6 +3,8 @@
 // ribbon, history and generator panels in panels_simulation.cpp.
 #include "app/panels.hpp"
 
+#include "app/slice_panel.hpp"
+
 #include <imgui.h>
 
 #include <cmath>
@@ -264,6 +266,8 @@ void Panels::menu_bar(GuiModel& model) {
       model.session.record("turn in 4D");
       model.view.plane_angles().fill(0.0f);
     }
+    if (ImGui::MenuItem("Slice by w = c", "W", model.scene().view.slice, has_4d_surfaces(model.scene())))
+      toggle_slice(model);
     ImGui::Separator();
     ImGui::MenuItem("Left panels", nullptr, &model.left_open);
     ImGui::MenuItem("Right panels", nullptr, &model.right_open);

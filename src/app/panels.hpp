@@ -73,6 +73,7 @@ struct GuiModel {
   bool open_same_knot = false;   // Exercises > Are these the same knot?
   bool open_unknot = false;      // Exercises > Unknot it by one crossing change
   bool show_keys = false;        // Help > Keys, ? and F1
+  Rect slice_button;             // the status line's Slice button as drawn this frame (for dumps)
   bool start_page = false;       // the start page in the view's place (no file given; File > Start page)
   std::vector<std::pair<std::string, Rect>> start_cards;  // its cards and buttons, drawn this frame
   bool open_file_dialog = false; // File > Open, asked from elsewhere (the start page)

@@ -40,7 +40,7 @@ const std::array<ToolEntry, 4> kTools{{
      [](GuiModel& m) -> Tool& { return m.ribbon; }},
 }};
 
-const std::array<KeyHelp, 16> kWindowKeys{{
+const std::array<KeyHelp, 18> kWindowKeys{{
     {"left drag", "the active tool; on empty space, turn the view"},
     {"Shift + drag", "turn in 4D: xw across, yw up and down"},
     {"Ctrl + drag", "turn in 4D: zw"},
@@ -55,6 +55,8 @@ const std::array<KeyHelp, 16> kWindowKeys{{
     {"M", "the next curve drawing: tubes, shadow, diagram"},
     {"L", "relax the knot (its energy, live)"},
     {"H", "touch and sound only: hide the picture"},
+    {"W", "the slice w = c of the surfaces of R^4 (Slice panel)"},
+    {"Alt + wheel", "move the slice's level c"},
     {"F12", "screenshot of the view"},
     {"? or F1", "this card of keys"},
 }};

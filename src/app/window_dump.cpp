@@ -152,7 +152,8 @@ void dump_hints(Json& j, const GuiModel& model, const HintMarkers& hints, const 
 
 }  // namespace
 
-void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hints, const std::string& path,
+void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slice, const HintMarkers& hints,
+                const std::string& path,
                 const Camera& camera, int window_frame) {
   const Rect& view = model.layout.view;
   Json j;
@@ -191,6 +192,11 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hin
   Json knot_panels = Json::object();
   knots.dump(knot_panels);
   j["knot_panels"] = knot_panels;
+  Json slice_panel = Json::object();
+  slice.dump(slice_panel);
+  const Rect& sb = model.slice_button;
+  if (!sb.empty()) slice_panel["buttons"]["Slice (W)"] = {sb.x, sb.y, sb.right(), sb.bottom()};
+  j["slice_panel"] = slice_panel;
   j["restore_offered"] = model.pending_restore.has_value();
   j["autosave"] = model.autosave_path;  // this window's own (its slot)
   if (model.pending_restore)

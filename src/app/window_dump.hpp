@@ -7,12 +7,14 @@
 #include "app/hint_markers.hpp"
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
+#include "app/slice_panel.hpp"
 #include "core/camera.hpp"
 
 namespace s4d {
 
 // Writes the dump to `path`; a failure to write shows as the window's error.
-void dump_state(GuiModel& model, const KnotPanels& knots, const HintMarkers& hints, const std::string& path,
+void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slice, const HintMarkers& hints,
+                const std::string& path,
                 const Camera& camera, int window_frame);
 
 }  // namespace s4d

@@ -8,6 +8,7 @@
 
 #include "app/knot_panels.hpp"
 #include "app/panels.hpp"
+#include "app/slice_panel.hpp"
 #include "app/tool_registry.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "interact/tools/view_edit.hpp"
@@ -58,6 +59,7 @@ void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const
     model.touch_and_sound_only = !model.touch_and_sound_only;
     model.status = model.touch_and_sound_only ? "touch and sound only: the picture is hidden (H shows it)" : "the picture is back";
   }
+  if (in.key_pressed(GLFW_KEY_W) && !in.ctrl()) toggle_slice(model);  // the slice w = c (Slice panel)
   if (in.key_pressed(GLFW_KEY_L) && !r.tool_drag) Panels::toggle_relax(model);  // the knot energy, live
   if (in.key_pressed(GLFW_KEY_M)) {  // the next curve display mode (Fig. 1 a, b, c)
     session.record("change the drawing");
@@ -128,7 +130,8 @@ void route_input(GuiModel& model, Routing& r, const WindowInput& in, const ToolI
   }
   right_and_middle(model, r, in, ti, captured, knots);
   if (!captured) {
-    if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
+    if (in.wheel() != 0 && in.alt() && model.scene().view.slice) step_slice(model, in.wheel());
+    else if (in.wheel() != 0 && !(tool && tool->wheel(in.wheel(), ti, session))) model.view.scroll(in.wheel());
     if (in.pressed(0)) {
       // Shift and Ctrl turn the view (in 4D), except that the ribbon sketch uses shift for
       // "below"; otherwise a press on a surface goes to the tool.
@@ -193,6 +196,19 @@ void status_line(GuiModel& model) {
     if (ImGui::SmallButton(label.c_str())) model.choose(active ? ToolChoice::kTouch : e.id);
     if (active) ImGui::PopStyleColor();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.tooltip);
+    ImGui::SameLine();
+  }
+  model.slice_button = Rect{};
+  if (has_4d_surfaces(model.scene())) {  // the slice w = c: not a tool, a way of looking, lit while on
+    const bool on = model.scene().view.slice;
+    if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    if (ImGui::SmallButton("Slice (W)")) toggle_slice(model);
+    if (on) ImGui::PopStyleColor();
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    model.slice_button = Rect{a.x, a.y, b.x - a.x, b.y - a.y};
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the surfaces cut by the hyperplane w = c of the 4D view, drawn on the shadow and named\n"
+                        "as a link in the Slice panel (Alt+wheel moves c)");
     ImGui::SameLine();
   }
   ImGui::TextDisabled("|");

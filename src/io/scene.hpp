@@ -3,6 +3,7 @@
 // the scene file), the 4D frame, the view, and the physics parameters.
 #pragma once
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,7 +79,15 @@ struct ViewSettings {
   // front. Curve tubes and the intersection marks stay opaque.
   double opacity = 1;
   Vec3f background{0.08f, 0.09f, 0.11f};
+  // The slice of the R^4 surfaces by the hyperplane w = slice_level of the 4D frame (the level
+  // set of the 4D depth, view/scene_slice.hpp), drawn over them as tubes in one bright colour;
+  // with slice_fade the surfaces are drawn at most kSliceFadeOpacity opaque behind it. Not stored
+  // in scene files (the window's Slice panel, `render --slice W`, `slice`).
+  bool slice = false;
+  double slice_level = std::numeric_limits<double>::quiet_NaN();  // NaN: not chosen (the window takes the middle)
+  bool slice_fade = true;
 };
+inline constexpr double kSliceFadeOpacity = 0.3;
 
 // Physics parameters stored with a scene: the simulation of its surfaces (scenario/world_builder
 // turns them into the physics layer's parameters; validated on load).

@@ -239,7 +239,7 @@ void Renderer::draw(const Scene& scene, int width, int height, int x, int y) {
   // far to near and the objects in the same order: a sheet behind is then blended in before the
   // one in front. Two sheets that cross are right on either side of the crossing, up to a
   // triangle's size, which a per-pixel method (depth peeling) would fix at several passes' cost.
-  const double opacity = std::isfinite(scene.view.opacity) ? std::clamp(scene.view.opacity, 0.05, 1.0) : 1.0;
+  const double opacity = drawn_opacity(scene.view);
   const bool see_through = opacity < 1;
   const Mat4 view_d = geometry.camera.view();
   const std::size_t count = geometry.objects.size() + geometry.overlays.size();

@@ -12,6 +12,7 @@
 #include "knots/knot_diagram.hpp"
 #include "proximity/shadow_crossings.hpp"
 #include "proximity/shadow_intersections.hpp"
+#include "view/scene_slice.hpp"
 
 namespace s4d {
 
@@ -594,6 +595,22 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     }
     g.objects.push_back(std::move(d));
   }
+  if (view.slice && std::isfinite(view.slice_level) && has_4d_surfaces(scene)) {
+    // Thicker than the curves' tubes: the slice is what the picture is about while it shows.
+    const SceneSlice slice = scene_slice(scene, view.slice_level);
+    DrawObject d;
+    d.surface = false;
+    TubeOptions opt;
+    opt.radius = 1.25 * radius;
+    opt.sides = kTubeSides;
+    for (const Polyline<3>& line : slice.curve.components) {
+      append_mesh(d.mesh, tube_mesh(line.points, line.closed, opt), 0);
+      d.colours.resize(d.mesh.vertex_count(), kSliceColour);
+      d.depth.resize(d.mesh.vertex_count(), view.slice_level);
+    }
+    g.slice_components = static_cast<int>(slice.curve.components.size());
+    if (d.mesh.vertex_count() > 0) g.overlays.push_back(std::move(d));
+  }
   if (view.intersections) {
     // Half the curves' tube radius: the curves lie on the sheets and should not hide them.
     g.overlays = intersection_overlays(scene, 0.5 * radius, g.intersections);
@@ -602,6 +619,11 @@ SceneGeometry build_scene_geometry(const Scene& scene, double aspect) {
     if (g.intersections.surfaces == 0) g.overlays.pop_back();  // no marks without surfaces
   }
   return g;
+}
+
+double drawn_opacity(const ViewSettings& view) {
+  const double opacity = std::isfinite(view.opacity) ? std::clamp(view.opacity, 0.05, 1.0) : 1.0;
+  return view.slice && view.slice_fade ? std::min(opacity, kSliceFadeOpacity) : opacity;
 }
 
 }  // namespace s4d

@@ -51,6 +51,11 @@ inline const Vec3f kBelowColour{0.15f, 0.42f, 1.0f};
 inline const Vec3f kPinchPointColour{0.20f, 0.90f, 0.35f};
 // The dot on the over strand at each crossing of a curve's image (view.intersections).
 inline const Vec3f kCrossingColour{0.95f, 0.95f, 0.95f};
+// The slice of the R^4 surfaces by w = c (view.slice): amber, apart from the depth colours and
+// the yellow of the intersection curves.
+inline const Vec3f kSliceColour{1.0f, 0.55f, 0.0f};
+// The surfaces' opacity as drawn: view.opacity, at most kSliceFadeOpacity while a faded slice shows.
+double drawn_opacity(const ViewSettings& view);
 
 // What the drawn intersection curves are, summed over the R^4 surfaces (each with itself and
 // each pair): for the view panel and the render command.
@@ -87,6 +92,7 @@ struct SceneGeometry {
   // above-below marks, unlit.
   std::vector<DrawObject> overlays;
   IntersectionSummary intersections;
+  int slice_components = -1;        // curves of the drawn slice (view.slice), -1 when not drawn
   // The strands the flat curve modes draw (view.curve_mode shadow or diagram; empty for tubes).
   CurveDiagram diagram;
   BoundingSphere bounds;            // of every drawn vertex (for flat curves, of their tubes)

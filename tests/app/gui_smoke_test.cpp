@@ -1271,5 +1271,90 @@ TEST(GuiSmoke, APressOnTheTorusTakesTheSameVertexEveryTimeAndCarriesItsRings) {
   }
 }
 
+// The window on the spun trefoil scenario, driven by an input file that ends in a dump and a shot.
+nlohmann::json slice_run(const std::filesystem::path& dir, const std::vector<std::string>& lines) {
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir / "script.txt");
+    int last = 0;
+    for (const std::string& l : lines) {
+      f << l << "\n";
+      last = std::max(last, std::stoi(l));
+    }
+    f << last + 5 << " dump " << (dir / "state.json").string() << "\n" << last + 6 << " shot "
+      << (dir / "shot.png").string() << "\n" << last + 7 << " quit\n";
+  }
+  GuiOptions options;
+  options.autosave = (std::filesystem::temp_directory_path() / "s4d_gui_autosave.s4d").string();
+  std::filesystem::remove(options.autosave);
+  options.open_spec = std::string(S4D_SOURCE_DIR) + "/scenarios/spun-trefoil-tighten.json";
+  options.input = (dir / "script.txt").string();
+  EXPECT_EQ(run_gui_app(options), 0);
+  return nlohmann::json::parse(std::ifstream(dir / "state.json"));
+}
+
+// Pixels of the slice's amber (render/scene_geometry.hpp) in the picture.
+int amber_pixels(const Image& shot) {
+  int n = 0;
+  for (int y = 0; y < shot.height; ++y)
+    for (int x = 0; x < shot.width; ++x) {
+      const std::uint8_t* p = shot.pixel(x, y);
+      n += p[0] > 170 && p[1] > 50 && p[1] < 150 && p[2] < 60 ? 1 : 0;
+    }
+  return n;
+}
+
+// The slice: the status line's Slice button, pressed where a person sees it, draws the spun
+// trefoil's slice through the middle of its range of w over the faded surface and opens the Slice
+// panel, which names it the square knot (the trefoil beside its mirror image); the movie strip's
+// frames are named and a click on one sets the level; W hides the slice; "Make it a curve" adds it
+// to the scene beside the surface, the Knot panel names it, and Ctrl+Z takes it back.
+TEST(GuiSmoke, TheSlicePanelNamesTheSpunTrefoilsMiddleSlice) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_slice";
+  const auto start = slice_run(dir / "start", {"3 move 100 700", "8 wait"});
+  EXPECT_FALSE(start["slice_panel"]["drawn"].get<bool>()) << "shown while the slice is";
+  EXPECT_FALSE(start["slice_panel"]["on"].get<bool>());
+  ASSERT_TRUE(start["slice_panel"]["buttons"].contains("Slice (W)")) << start["slice_panel"];
+  const auto on = click(10, start["slice_panel"]["buttons"]["Slice (W)"]) + std::vector<std::string>{"18 wait", "24 wait"};
+  const auto sliced = slice_run(dir / "on", on);
+  const auto& panel = sliced["slice_panel"];
+  ASSERT_TRUE(panel["on"].get<bool>()) << panel;
+  EXPECT_EQ(panel["components"].get<int>(), 1);
+  EXPECT_EQ(panel["name"].get<std::string>(), "3_1 # 3_1 mirror") << panel;
+  EXPECT_TRUE(panel["proven"].get<bool>());
+  EXPECT_EQ(panel["critical"]["euler_characteristic"].get<int>(), 2);
+  // The held pole's marker is orange too (about 60 pixels); the slice's tubes are thousands.
+  const int before = amber_pixels(read_png(dir / "start" / "shot.png"));
+  EXPECT_GT(amber_pixels(read_png(dir / "on" / "shot.png")), before + 3000) << "the slice is drawn";
+
+  // The movie strip: nine frames named; a click on the last sets the level there.
+  ASSERT_TRUE(panel["buttons"].contains("Movie")) << panel;
+  const auto strip = on + click(30, panel["buttons"]["Movie"]) + std::vector<std::string>{"40 wait", "46 wait"};
+  const auto movie = slice_run(dir / "movie", strip)["slice_panel"]["movie"];
+  ASSERT_EQ(movie.size(), 9u) << movie;
+  EXPECT_EQ(movie[4]["name"].get<std::string>(), "3_1 # 3_1 mirror") << movie;
+  ASSERT_TRUE(movie[8].contains("name")) << movie;
+  const auto picked = slice_run(dir / "picked", strip + click(50, movie[8]["rect"]) + std::vector<std::string>{"60 wait"});
+  EXPECT_DOUBLE_EQ(picked["slice_panel"]["level"].get<double>(), movie[8]["level"].get<double>());
+  EXPECT_EQ(picked["slice_panel"]["name"].get<std::string>().rfind(movie[8]["name"].get<std::string>(), 0), 0u)
+      << picked["slice_panel"] << movie[8];
+
+  const auto hidden = slice_run(dir / "hidden", on + std::vector<std::string>{"30 key W", "34 wait"});
+  EXPECT_FALSE(hidden["slice_panel"]["on"].get<bool>());
+  EXPECT_LT(amber_pixels(read_png(dir / "hidden" / "shot.png")), before + 100);
+
+  ASSERT_TRUE(panel["buttons"].contains("Make it a curve")) << panel;
+  const auto make = on + click(30, panel["buttons"]["Make it a curve"]) + std::vector<std::string>{"40 wait"};
+  const auto made = slice_run(dir / "made", make);
+  EXPECT_EQ(made["objects"].get<int>(), start["objects"].get<int>() + 1) << made["status"] << made["error"];
+  EXPECT_NE(made["status"].get<std::string>().find("is a curve of the scene"), std::string::npos) << made["status"];
+  EXPECT_EQ(made["knot_panel_name"].get<std::string>(), "3_1 # 3_1 mirror") << "the Knot panel names the new curve";
+  const auto undone = slice_run(dir / "undone", make + std::vector<std::string>{"46 key-down LEFT_CONTROL", "47 key Z",
+                                                                               "48 key-up LEFT_CONTROL", "54 wait"});
+  EXPECT_EQ(undone["objects"].get<int>(), start["objects"].get<int>());
+}
+
 }  // namespace
 }  // namespace s4d

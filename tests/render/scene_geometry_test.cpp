@@ -13,6 +13,7 @@
 
 #include "knots/knot_diagram.hpp"
 #include "render/test_shapes.hpp"
+#include "shape/surfaces_4d.hpp"
 
 namespace s4d {
 namespace {
@@ -535,6 +536,34 @@ TEST(SceneGeometry, EmptySceneHasAUsableCamera) {
   EXPECT_TRUE(g.objects.empty());
   EXPECT_TRUE(g.camera.view().allFinite());
   EXPECT_TRUE(g.camera.projection().allFinite());
+}
+
+// view.slice draws the slice w = c of the R^4 surfaces as one amber overlay over faded surfaces.
+TEST(SceneGeometry, TheSliceIsDrawnOverFadedSurfaces) {
+  Scene sc;
+  SceneObject o;
+  o.name = "torus";
+  o.shape = clifford_torus(32, 32);
+  sc.objects.push_back(o);
+  sc.view.opacity = 0.8;
+  const SceneGeometry off = build_scene_geometry(sc, 1.0);
+  EXPECT_EQ(off.slice_components, -1);
+  EXPECT_TRUE(off.overlays.empty());
+  EXPECT_DOUBLE_EQ(drawn_opacity(sc.view), 0.8);
+  sc.view.slice = true;
+  sc.view.slice_level = 0.4;
+  const SceneGeometry on = build_scene_geometry(sc, 1.0);
+  EXPECT_EQ(on.slice_components, 2);  // two circles: sin v = 0.4
+  ASSERT_EQ(on.overlays.size(), 1u);
+  EXPECT_FALSE(on.overlays[0].surface);
+  for (const Vec3f& c : on.overlays[0].colours) EXPECT_EQ(c, kSliceColour);
+  EXPECT_DOUBLE_EQ(drawn_opacity(sc.view), kSliceFadeOpacity);
+  sc.view.slice_fade = false;
+  EXPECT_DOUBLE_EQ(drawn_opacity(sc.view), 0.8);
+  sc.view.slice_level = 3;  // above the torus: nothing to draw
+  const SceneGeometry above = build_scene_geometry(sc, 1.0);
+  EXPECT_EQ(above.slice_components, 0);
+  EXPECT_TRUE(above.overlays.empty());
 }
 
 }  // namespace
