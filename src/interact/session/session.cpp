@@ -437,6 +437,10 @@ void Session::open_saved(const SessionFile& saved, const std::string& path, cons
 
 void Session::offer_state(std::unique_ptr<WorldState> state) {
   if (!handover_ || !state) return;
+  // An offer that replaces one not yet taken keeps its clock: an undo right after a session was
+  // reopened (its history is saved with it) must not drop the simulated time the reopened state
+  // carried, which the World would then start again from zero.
+  if (state->time < 0 && state_pending() && offered_.time >= 0) state->time = offered_.time;
   state->revision = ++offered_revision_;
   offered_ = *state;
   handover_->offer_state(std::move(state));

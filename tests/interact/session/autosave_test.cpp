@@ -95,6 +95,33 @@ TEST(SessionSave, AVertexHeldWhenSavedComesBackPinnedWhereItWas) {
   for (int k = 0; k < 4; ++k) EXPECT_EQ(b.snapshot()->points[5 * 4 + k], saved.simulation.positions[5 * 4 + k]);
 }
 
+// An undo before the reopened state reached the simulation (its history came with it) keeps the
+// reopened clock: the World does not start again from zero. The kill test's runs met this.
+TEST(SessionSave, AnUndoRightAfterReopeningKeepsTheSimulatedTime) {
+  SessionOptions o;
+  o.threaded = false;
+  o.async_physics = false;
+  Session a;
+  a.open(falling_cloth(), o);
+  a.send(live::Play{});
+  a.loop()->run_ticks(100);
+  a.refresh();
+  a.record("pin vertex 3");
+  a.send(live::Pin{3, live::PinAction::kPin});
+  a.loop()->run_ticks(100);
+  a.refresh();
+  const SessionFile saved = parse_session(session_text(a.save_state()), "t.s4d");
+  ASSERT_NEAR(saved.simulation.time, 0.2, 1e-9);
+  Session b;
+  b.open_saved(saved, "t.s4d", o);
+  ASSERT_TRUE(b.state_pending());
+  ASSERT_TRUE(b.undo()) << "the saved history's step";
+  b.loop()->run_ticks(10);
+  b.refresh();
+  EXPECT_NEAR(b.snapshot()->status.sim_time, 0.2, 1e-9) << "the reopened clock (paused at the undone state), not 0";
+  EXPECT_FALSE(b.pinned(3)) << "the pin undone";
+}
+
 TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
   const fs::path dir = fs::temp_directory_path() / "s4d_autosave_test";
   fs::remove_all(dir);
@@ -292,10 +319,13 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
     // kills. On a machine loaded far beyond its cores the saver itself waits for the CPU (a
     // starved process loses no work it has not done), so the allowance grows with the load.
     double began = killed_at;  // never began: nothing of its own to lose
+    std::string said;          // the run's own lines, for a failure's message
     {
       std::ifstream in(log);
-      for (std::string line; std::getline(in, line);)
+      for (std::string line; std::getline(in, line);) {
         if (line.rfind("running from ", 0) == 0) began = std::atof(line.c_str() + 13);
+        said += line + "\n";
+      }
     }
     const double age = killed_at - f.saved_at;
     const double lost = killed_at - std::max(f.saved_at, began);
@@ -310,7 +340,7 @@ TEST(Autosave, KilledAtRandomItNeverLeavesAHalfWrittenFileAndLosesAtMostAnInterv
     EXPECT_GE(age, -0.05);
     // Each run took up the last one's work: a new autosave goes on from its simulated time.
     if (last_time >= 0 && f.saved_at > last_saved_at) {
-      EXPECT_GE(f.simulation.time, last_time) << "run " << k << " restored the work it was left";
+      EXPECT_GE(f.simulation.time, last_time) << "run " << k << " restored the work it was left; it said:\n" << said;
     }
     last_time = f.simulation.time;
     last_saved_at = f.saved_at;
