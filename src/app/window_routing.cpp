@@ -31,7 +31,7 @@ void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const
   if (in.key_pressed(GLFW_KEY_ESCAPE)) {  // drops what the tool has under way, and always back to Touch
     const bool dropped = tool && tool->key(ToolKey::kEscape, ti, session);
     if (model.tool != ToolChoice::kTouch) {
-      const std::string said = dropped && tool ? tool->take_message() : std::string();
+      const std::string said = dropped ? tool->take_message() : std::string();
       model.choose(ToolChoice::kTouch);
       if (!said.empty()) model.status = said + "; back to Touch";
     }

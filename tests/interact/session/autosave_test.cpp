@@ -39,6 +39,15 @@ Document falling_cloth() {
   return d;
 }
 
+// The falling cloth opened unthreaded and stepped once: a session with a state to save.
+void open_one_step_in(Session& s) {
+  SessionOptions o;
+  o.threaded = false;
+  s.open(falling_cloth(), o);
+  s.loop()->run_ticks(1);
+  s.refresh();
+}
+
 TEST(SessionSave, TheStateComesBackInAnotherSession) {
   Session a;
   SessionOptions o;
@@ -126,11 +135,7 @@ TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
   const fs::path dir = fs::temp_directory_path() / "s4d_autosave_test";
   fs::remove_all(dir);
   Session s;
-  SessionOptions o;
-  o.threaded = false;
-  s.open(falling_cloth(), o);
-  s.loop()->run_ticks(1);
-  s.refresh();
+  open_one_step_in(s);
   Autosaver saver({dir / "auto.s4d", 0.05, 2});
   const auto t0 = std::chrono::steady_clock::now();
   EXPECT_FALSE(saver.tick(s, t0)) << "not before the interval";
@@ -155,12 +160,8 @@ TEST(Autosave, WritesOnItsIntervalAndMarksTheRunUnfinished) {
 TEST(Autosave, EachRunningWindowHasItsOwnSlotAndOnlyDeadOnesAreOffered) {
   const fs::path dir = fs::temp_directory_path() / "s4d_autosave_slots";
   fs::remove_all(dir);
-  SessionOptions o;
-  o.threaded = false;
   Session s;
-  s.open(falling_cloth(), o);
-  s.loop()->run_ticks(1);
-  s.refresh();
+  open_one_step_in(s);
   const fs::path first = dir / "auto.s4d";
   auto a = std::make_unique<Autosaver>(AutosaveOptions{first, 30, 2});
   auto b = std::make_unique<Autosaver>(AutosaveOptions{first, 30, 2});
@@ -195,12 +196,8 @@ TEST(Autosave, EachRunningWindowHasItsOwnSlotAndOnlyDeadOnesAreOffered) {
 TEST(Autosave, ASignalsNameIsKeptAndSaid) {
   const fs::path dir = fs::temp_directory_path() / "s4d_autosave_signal";
   fs::remove_all(dir);
-  SessionOptions o;
-  o.threaded = false;
   Session s;
-  s.open(falling_cloth(), o);
-  s.loop()->run_ticks(1);
-  s.refresh();
+  open_one_step_in(s);
   {
     Autosaver a({dir / "auto.s4d", 30, 2});
     ASSERT_TRUE(a.save_now(s, false, "SIGTERM"));
