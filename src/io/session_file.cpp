@@ -367,28 +367,33 @@ class SummarySax final : public nlohmann::json_sax<Json> {
 
 }  // namespace
 
-SessionSummary read_session_summary(const std::filesystem::path& path) {
-  const Ctx c{path.string()};
+SessionSummary parse_session_summary(const std::string& text, const std::filesystem::path& origin) {
+  const Ctx c{origin.string()};
   SummarySax sax;
-  // The opening bytes hold the three fields in files written since they come first; an older file
-  // (or one cut short before them) is read whole.
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot read " + path.string());
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  if (!Json::sax_parse(head, &sax) && !sax.complete) {
-    sax = SummarySax{};
-    const std::string text = read_text_file(path);
-    if (!Json::sax_parse(text, &sax) && !sax.complete)
-      throw ParseError(c.file, 0, "not a session (damaged or not JSON): " + sax.error);
-  }
+  if (!Json::sax_parse(text, &sax) && !sax.complete)
+    throw ParseError(c.file, 0, "not a session (damaged or not JSON): " + sax.error);
   if (!sax.has_version) c.fail("shadow4d_session", "missing: this is no session file");
   if (sax.summary.version > kSessionVersion)
     c.fail("shadow4d_session", "written by a newer shadow4d (version " + std::to_string(sax.summary.version) +
                                    "); this one reads " + std::to_string(kSessionVersion));
   if (sax.summary.version < 1) c.fail("shadow4d_session", "not a version number");
   return sax.summary;
+}
+
+SessionSummary read_session_summary(const std::filesystem::path& path) {
+  // The opening bytes hold the three fields in files written since they come first; an older file
+  // (or one whose opening does not hold them) is read whole.
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot read " + path.string());
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  try {
+    return parse_session_summary(head, path);
+  } catch (const ParseError&) {
+    if (in.gcount() < 4096) throw;  // that was the whole file
+  }
+  return parse_session_summary(read_text_file(path), path);
 }
 
 void write_session(const SessionFile& session, const std::filesystem::path& path, int keep, StateTextCache* cache) {

@@ -101,6 +101,7 @@ struct SessionSummary {
 };
 // Throws ParseError for a file that is not JSON or not a session, as read_session does; the rest
 // of the file is checked only when it is read.
+SessionSummary parse_session_summary(const std::string& text, const std::filesystem::path& origin);
 SessionSummary read_session_summary(const std::filesystem::path& path);
 // Atomic (io/atomic_file.hpp); `keep` older versions are kept beside it.
 void write_session(const SessionFile& session, const std::filesystem::path& path, int keep = 0,
