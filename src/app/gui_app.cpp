@@ -148,7 +148,7 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
   Session& s = model.session;
   if (!s.loop() || !s.snapshot()) return;
   const Frame<4>& f = model.scene().frame;
-  if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12) {
+  if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12 || f.perspective() != sent_frame.perspective()) {
     s.send(live::SetFrame::from(f));
     sent_frame = f;
   }
@@ -180,15 +180,17 @@ ViewFit enclosing(const ViewFit& a, const ViewFit& b) {
   return f;
 }
 
-// The view's ball in the shadow: a ball of R^4 is seen through the frame (its shadow is a ball
-// of the same radius); objects of R^3 are drawn as they are.
+// The view's ball in the shadow: a ball of R^4 is seen through the frame (orthographic, its shadow
+// is a ball of the same radius; in perspective, within Frame::shadow_radius); objects of R^3 are
+// drawn as they are.
 void frame_the_fit(GuiModel& model) {
   Scene& scene = model.scene();
   bool in_r4 = false;
   for (const SceneObject& o : scene.objects) in_r4 = in_r4 || ambient_dim(o.shape) == 4;
-  scene.view.fit_centre = in_r4 ? Vec3(scene.frame.shadow(model.fit.centre)) : Vec3(model.fit.centre.head<3>());
-  scene.view.fit_centre += model.view.pan_offset(model.fit.radius);
-  scene.view.fit_radius = model.fit.radius;
+  const Vec4 q = scene.frame.to_view(model.fit.centre);
+  scene.view.fit_centre = in_r4 ? Vec3(scene.frame.project(q)) : Vec3(model.fit.centre.head<3>());
+  scene.view.fit_radius = in_r4 ? scene.frame.shadow_radius(q, model.fit.radius) : model.fit.radius;
+  scene.view.fit_centre += model.view.pan_offset(scene.view.fit_radius);
 }
 
 // [SECTION] the loop
@@ -273,6 +275,7 @@ class GuiApp {
       f.view.angles = model_.view.plane_angles();
       f.view.trackball = model_.view.trackball();
       f.view.zoom = model_.view.zoom();
+      f.view.perspective = model_.view.perspective();
       f.tool = model_.active_tool()->name();
       f.tool_settings = tool_settings(model_);
     };
