@@ -160,6 +160,7 @@ std::string session_text(const SessionFile& s, StateTextCache* cache) {
     for (int k = 0; k < 4; ++k) base.push_back(s.view.base_frame.matrix()(r, k));
   root["view"] = {{"angles", s.view.angles}, {"base_frame", base},
                   {"trackball", quaternion_json(s.view.trackball)}, {"zoom", s.view.zoom}};
+  if (s.view.perspective > 0) root["view"]["perspective"] = s.view.perspective;  // orthographic files stay as they were
   root["tool"] = s.tool;
   root["tool_settings"] = settings_json(s.tool_settings);
   root["history"] = s.history;
@@ -256,6 +257,11 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     s.view.trackball = parse_quaternion(c, j.value("trackball", Json::array({1, 0, 0, 0})), "view.trackball");
     s.view.zoom = c.number(j.value("zoom", Json(1)), "view.zoom");
     if (!(s.view.zoom > 0)) c.fail("view.zoom", "must be positive");
+    if (j.contains("perspective")) {
+      s.view.perspective = c.number(j["perspective"], "view.perspective");
+      if (s.view.perspective != 0)  // 0: orthographic
+        if (const std::string e = Frame<4>::perspective_error(s.view.perspective); !e.empty()) c.fail("view.perspective", e);
+    }
   }
   if (root.contains("tool")) {
     if (!root["tool"].is_string()) c.fail("tool", "must be a string");

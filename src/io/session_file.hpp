@@ -43,12 +43,13 @@ struct SimulationState {
 };
 
 // The window's view beyond the scene's own: the six 4D slider angles over the base frame, the
-// trackball and the zoom.
+// trackball, the zoom and the 4D perspective.
 struct SessionView {
   std::array<float, 6> angles{};  // degrees, xy xz xw yz yw zw
   Frame<4> base_frame;
   Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();
   double zoom = 1;
+  double perspective = 0;  // the 4D eye's distance along w (Frame::set_perspective); 0 orthographic
 };
 
 struct SessionFile {
