@@ -126,9 +126,12 @@ KnotDiagram diagram_from_pd_numbers(const std::string& text) {
   GaussDiagram g;
   g.sign.assign(n, 0);
   std::vector<std::array<char, 4>> used(n, {0, 0, 0, 0});
+  // Each component with the edge numbers it enters its visits by.
+  std::vector<std::pair<std::vector<GaussVisit>, std::vector<long>>> found;
   // Walks a component entering crossing x at slot s; records the visits.
   auto walk = [&](int x, int s) {
     std::vector<GaussVisit> comp;
+    std::vector<long> in;
     while (!used[x][s]) {
       const int out = (s + 2) % 4;
       if (s == 2) throw Error("the PD code's under strand at a crossing leaves by its incoming edge");
@@ -136,9 +139,10 @@ KnotDiagram diagram_from_pd_numbers(const std::string& text) {
       const bool over = s % 2 == 1;
       if (over) g.sign[x] = s == 3 ? 1 : -1;
       comp.push_back({x, over});
+      in.push_back(num[4 * x + s]);
       std::tie(x, s) = far_end(x, out);
     }
-    g.comps.push_back(std::move(comp));
+    found.emplace_back(std::move(comp), std::move(in));
   };
   for (int x = 0; x < n; ++x)
     if (!used[x][0]) walk(x, 0);
@@ -149,6 +153,15 @@ KnotDiagram diagram_from_pd_numbers(const std::string& text) {
       const bool l_to_j = j == l + 1 || (l > j + 1);
       walk(x, l_to_j ? 3 : 1);
     }
+  // As Regina reads them: components in order of their least edge number, each from the visit
+  // that edge enters.
+  for (auto& [comp, in] : found) {
+    const auto least = std::min_element(in.begin(), in.end()) - in.begin();
+    std::rotate(comp.begin(), comp.begin() + least, comp.end());
+    std::rotate(in.begin(), in.begin() + least, in.end());
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.second[0] < b.second[0]; });
+  for (auto& f : found) g.comps.push_back(std::move(f.first));
   return g.diagram();
 }
 
@@ -185,9 +198,13 @@ std::string dt_text(const KnotDiagram& d, bool alphabetical) {
   // Visits numbered 1..2n along the knot; each crossing pairs an odd and an even number.
   std::vector<int> odd_of(n, 0), even_of(n, 0);
   std::vector<char> even_over(n, 0);
+  // As Regina: numbered from the under passage of the first crossing met.
   const auto& comp = d.components[0];
+  const int first = d.passages[comp[0]].crossing;
+  int start = 0;
+  while (d.passages[comp[start]].crossing != first || d.passages[comp[start]].over) ++start;
   for (int i = 0; i < 2 * n; ++i) {
-    const Passage& v = d.passages[comp[i]];
+    const Passage& v = d.passages[comp[(start + i) % (2 * n)]];
     if (i % 2 == 0) {
       odd_of[v.crossing] = i + 1;
     } else {
@@ -198,7 +215,7 @@ std::string dt_text(const KnotDiagram& d, bool alphabetical) {
   std::vector<int> by_odd(n, 0);
   for (int k = 0; k < n; ++k) {
     if (odd_of[k] == 0 || even_of[k] == 0) return "";  // not a planar knot diagram
-    by_odd[(odd_of[k] - 1) / 2] = even_over[k] ? -even_of[k] : even_of[k];
+    by_odd[(odd_of[k] - 1) / 2] = even_over[k] ? even_of[k] : -even_of[k];  // negative: under at the even visit
   }
   std::string s;
   for (int v : by_odd) {
