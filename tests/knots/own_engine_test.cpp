@@ -5,6 +5,7 @@
 // Sections: [SECTION] moves, [SECTION] polynomials, [SECTION] codes, [SECTION] naming.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <random>
 
 #include "knots/braid_closure.hpp"
@@ -178,6 +179,91 @@ TEST(OwnEngine, PdCodesReadAsReginaReadsThem) {
     EXPECT_EQ(homfly_polynomial(own), homfly_polynomial(theirs)) << e.name;
     EXPECT_EQ(own.linking_numbers(), theirs.linking_numbers()) << e.name;
   }
+}
+#endif
+
+// [SECTION] naming
+
+NamingOptions with_engine(KnotEngine e, bool fast) {
+  NamingOptions o;
+  o.engine = e;
+  o.fast = fast;
+  return o;
+}
+
+TEST(OwnEngine, SaysWhatItCannotDoAndLeavesTheNameNotProven) {
+  // 10_132 and 5_1 share HOMFLY-PT; Regina's covers tell them apart, the own engine has none.
+  const KnotNaming n = name_diagram(table_knot("10_132 mirror").diagram, with_engine(KnotEngine::kOwn, false));
+  EXPECT_FALSE(n.proven());
+  EXPECT_EQ(n.candidates(), (std::vector<std::string>{"5_1 mirror", "10_132 mirror"}));
+  ASSERT_FALSE(n.unavailable.empty());
+  EXPECT_NE(n.unavailable[0].find("covers"), std::string::npos);
+  EXPECT_NE(n.headline().find("[without Regina: covers of the knot group of index 2 to 6 unavailable]"),
+            std::string::npos)
+      << n.headline();
+  EXPECT_EQ(n.identification.invariants.engine, KnotEngine::kOwn);
+}
+
+#if S4D_WITH_REGINA
+// The own engine's name of a curve against the desktop's: equal, and proven alike, unless Regina
+// proved it by a refinement the own engine lacks (covers, unknot recognition); then the desktop's
+// answer is among the own engine's candidates, which are not proven.
+struct Agreement {
+  int equal = 0, regina_only = 0;
+};
+
+void expect_same_name(const Curve<3>& curve, const std::string& what, Agreement& a) {
+  const KnotNaming own = name_knot(curve, with_engine(KnotEngine::kOwn, false));
+  KnotNaming regina = name_knot(curve, with_engine(KnotEngine::kRegina, true));
+  if (!regina.proven()) regina = name_knot(curve, with_engine(KnotEngine::kRegina, false));
+  if (own.name() == regina.name() && own.proven() == regina.proven()) {
+    ++a.equal;
+    return;
+  }
+  SCOPED_TRACE(what + ": own '" + own.headline() + "', Regina '" + regina.headline() + "'");
+  EXPECT_FALSE(own.proven());
+  EXPECT_FALSE(own.unavailable.empty());
+  const auto cands = own.candidates();
+  for (const std::string& c : regina.candidates())
+    EXPECT_NE(std::find(cands.begin(), cands.end(), c), cands.end()) << c;
+  ++a.regina_only;
+}
+
+TEST(OwnEngine, NamesEveryTableKnotAndLinkToTwelveCrossingsAsTheDesktopDoes) {
+  DiagramEmbedding raw;
+  raw.relax_iterations = 0;  // the drawing itself: fast, and its diagram is the table's
+  Agreement a;
+  int n = 0;
+  for (const TableName& t : knot_table_names()) {
+    if (t.crossings > kMaxCrossings || t.source == "torus") continue;
+    expect_same_name(make_table_knot(t.name, raw), t.name, a);
+    ++n;
+  }
+  std::cout << "[ own engine ] " << n << " table knots and links: " << a.equal << " named alike, " << a.regina_only
+            << " proven only by Regina's refinements\n";
+  EXPECT_GT(n, 4300);
+  EXPECT_LT(a.regina_only, n / 50);
+}
+
+TEST(OwnEngine, NamesRelaxedAndRedrawnCurvesAsTheDesktopDoes) {
+  std::mt19937 rng(35);
+  Agreement a;
+  int n = 0;
+  const auto names = knot_table_names();
+  for (std::size_t i = 0; i < names.size(); i += 23) {
+    const TableName& t = names[i];
+    if (t.crossings > kMaxCrossings || t.source == "torus") continue;
+    Curve<3> c = make_table_knot(t.name);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0);
+    const Mat<3> turn = Eigen::AngleAxisd(angle(rng), Vec3(angle(rng), angle(rng), 1.0).normalized()).toRotationMatrix();
+    for (auto& comp : c.components)
+      for (Vec3& q : comp.points) q = turn * q;
+    expect_same_name(c, t.name, a);
+    ++n;
+  }
+  std::cout << "[ own engine ] " << n << " relaxed, turned curves: " << a.equal << " named alike, " << a.regina_only
+            << " proven only by Regina's refinements\n";
+  EXPECT_GT(n, 150);
 }
 #endif
 
