@@ -21,7 +21,9 @@
 #include "knots/knot_info.hpp"
 #include "knots/knot_naming.hpp"
 #include "knots/knot_table.hpp"
+#if S4D_WITH_REGINA
 #include "knots/regina_link.hpp"
+#endif
 
 namespace s4d {
 namespace {

@@ -205,28 +205,30 @@ TEST(OwnEngine, SaysWhatItCannotDoAndLeavesTheNameNotProven) {
 }
 
 #if S4D_WITH_REGINA
-// The own engine's name of a curve against the desktop's: equal, and proven alike, unless Regina
-// proved it by a refinement the own engine lacks (covers, unknot recognition); then the desktop's
-// answer is among the own engine's candidates, which are not proven.
+// The own engine's name of a curve against the desktop's. Where Regina's polynomials and
+// simplification decide (its fast naming is proven), the own engine's full naming must give the
+// same name, proven. Where they leave candidates (the desktop then runs its covers: seconds per
+// knot, too slow to run here for all of them) the own engine must leave the same candidates or
+// fewer (its Reidemeister search may prove one), never one Regina has ruled out.
 struct Agreement {
-  int equal = 0, regina_only = 0;
+  int equal = 0, candidates = 0;
 };
 
 void expect_same_name(const Curve<3>& curve, const std::string& what, Agreement& a) {
   const KnotNaming own = name_knot(curve, with_engine(KnotEngine::kOwn, false));
-  KnotNaming regina = name_knot(curve, with_engine(KnotEngine::kRegina, true));
-  if (!regina.proven()) regina = name_knot(curve, with_engine(KnotEngine::kRegina, false));
-  if (own.name() == regina.name() && own.proven() == regina.proven()) {
-    ++a.equal;
+  const KnotNaming regina = name_knot(curve, with_engine(KnotEngine::kRegina, true));
+  SCOPED_TRACE(what + ": own '" + own.headline() + "', Regina '" + regina.headline() + "'");
+  if (regina.proven()) {
+    EXPECT_EQ(own.name(), regina.name());
+    EXPECT_TRUE(own.proven());
+    a.equal += own.name() == regina.name() && own.proven();
     return;
   }
-  SCOPED_TRACE(what + ": own '" + own.headline() + "', Regina '" + regina.headline() + "'");
-  EXPECT_FALSE(own.proven());
-  EXPECT_FALSE(own.unavailable.empty());
-  const auto cands = own.candidates();
-  for (const std::string& c : regina.candidates())
-    EXPECT_NE(std::find(cands.begin(), cands.end(), c), cands.end()) << c;
-  ++a.regina_only;
+  const auto theirs = regina.candidates();
+  for (const std::string& c : own.candidates())
+    EXPECT_NE(std::find(theirs.begin(), theirs.end(), c), theirs.end()) << c;
+  if (!own.proven()) EXPECT_FALSE(own.unavailable.empty());
+  ++a.candidates;
 }
 
 TEST(OwnEngine, NamesEveryTableKnotAndLinkToTwelveCrossingsAsTheDesktopDoes) {
@@ -237,12 +239,12 @@ TEST(OwnEngine, NamesEveryTableKnotAndLinkToTwelveCrossingsAsTheDesktopDoes) {
   for (const TableName& t : knot_table_names()) {
     if (t.crossings > kMaxCrossings || t.source == "torus") continue;
     expect_same_name(make_table_knot(t.name, raw), t.name, a);
-    ++n;
+    if (++n % 500 == 0) std::cout << "[ own engine ] " << n << " named\n" << std::flush;
   }
-  std::cout << "[ own engine ] " << n << " table knots and links: " << a.equal << " named alike, " << a.regina_only
-            << " proven only by Regina's refinements\n";
+  std::cout << "[ own engine ] " << n << " table knots and links: " << a.equal << " named alike and proven, "
+            << a.candidates << " left to the refinements (the same candidates or fewer)\n";
   EXPECT_GT(n, 4300);
-  EXPECT_LT(a.regina_only, n / 50);
+  EXPECT_GT(a.equal, n * 9 / 10);
 }
 
 TEST(OwnEngine, NamesRelaxedAndRedrawnCurvesAsTheDesktopDoes) {
@@ -250,7 +252,7 @@ TEST(OwnEngine, NamesRelaxedAndRedrawnCurvesAsTheDesktopDoes) {
   Agreement a;
   int n = 0;
   const auto names = knot_table_names();
-  for (std::size_t i = 0; i < names.size(); i += 23) {
+  for (std::size_t i = 0; i < names.size(); i += 47) {
     const TableName& t = names[i];
     if (t.crossings > kMaxCrossings || t.source == "torus") continue;
     Curve<3> c = make_table_knot(t.name);
@@ -261,9 +263,9 @@ TEST(OwnEngine, NamesRelaxedAndRedrawnCurvesAsTheDesktopDoes) {
     expect_same_name(c, t.name, a);
     ++n;
   }
-  std::cout << "[ own engine ] " << n << " relaxed, turned curves: " << a.equal << " named alike, " << a.regina_only
-            << " proven only by Regina's refinements\n";
-  EXPECT_GT(n, 150);
+  std::cout << "[ own engine ] " << n << " relaxed, turned curves: " << a.equal << " named alike and proven, "
+            << a.candidates << " left to the refinements\n";
+  EXPECT_GT(n, 80);
 }
 #endif
 
