@@ -154,9 +154,10 @@ KnotDiagram diagram_from_pd_numbers(const std::string& text) {
       walk(x, l_to_j ? 3 : 1);
     }
   // As Regina reads them: components in order of their least edge number, each from the visit
-  // that edge enters.
+  // that edge leaves.
   for (auto& [comp, in] : found) {
-    const auto least = std::min_element(in.begin(), in.end()) - in.begin();
+    const auto m = static_cast<std::ptrdiff_t>(in.size());
+    const auto least = (std::min_element(in.begin(), in.end()) - in.begin() + m - 1) % m;
     std::rotate(comp.begin(), comp.begin() + least, comp.end());
     std::rotate(in.begin(), in.begin() + least, in.end());
   }

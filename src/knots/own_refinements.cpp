@@ -65,6 +65,12 @@ class OwnRefinements final : public KnotRefinements {
 
 }  // namespace
 
+#if !S4D_WITH_REGINA
+std::string cover_signature(const KnotDiagram&, int) {
+  throw Error("covers of the knot group need Regina, which this build lacks");
+}
+#endif
+
 const KnotRefinements& own_refinements() {
   static const OwnRefinements r;
   return r;

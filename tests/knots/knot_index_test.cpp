@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#if S4D_WITH_REGINA
 #include <link/link.h>
 #include <packet/packet.h>
+#endif
 
 #include <map>
 

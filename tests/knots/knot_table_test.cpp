@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#if S4D_WITH_REGINA
 #include <link/link.h>
+#endif
 
 #include "core/error.hpp"
 #include "knots/diagram_embedding.hpp"
