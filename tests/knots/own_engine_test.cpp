@@ -227,7 +227,9 @@ void expect_same_name(const Curve<3>& curve, const std::string& what, Agreement&
   const auto theirs = regina.candidates();
   for (const std::string& c : own.candidates())
     EXPECT_NE(std::find(theirs.begin(), theirs.end(), c), theirs.end()) << c;
-  if (!own.proven()) EXPECT_FALSE(own.unavailable.empty());
+  if (!own.proven()) {
+    EXPECT_FALSE(own.unavailable.empty());
+  }
   ++a.candidates;
 }
 
