@@ -264,7 +264,7 @@ GaussDiagram simplify_gauss(GaussDiagram g, const SimplifyOptions& options) {
   GaussDiagram best = g;
   for (int attempt = 0; attempt < options.attempts && best.crossings() > 2; ++attempt) {
     GaussDiagram h = best;
-    const int steps = options.walk_length > 0 ? options.walk_length : 2 * h.crossings();
+    const int steps = options.walk_length > 0 ? options.walk_length : 3 * h.crossings();
     for (int s = 0; s < steps; ++s) {
       const auto moves = r3_moves(h);
       if (moves.empty()) break;

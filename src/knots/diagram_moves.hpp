@@ -52,8 +52,8 @@ std::vector<R3Move> r3_moves(const GaussDiagram& g);
 void apply_r3(GaussDiagram& g, const R3Move& move);
 
 struct SimplifyOptions {
-  int attempts = 24;           // random walks of R3 moves tried after R1/R2 stall
-  int walk_length = 0;         // R3 moves per walk (0: twice the crossings)
+  int attempts = 64;           // random walks of R3 moves tried after R1/R2 stall
+  int walk_length = 0;         // R3 moves per walk (0: three times the crossings)
   std::uint64_t seed = 0x5eed;
 };
 // R1/R2 removal, then random walks of R3 moves (each followed by R1/R2 removal) kept when they
