@@ -201,8 +201,7 @@ void search_table_diagrams(Context& c) {
       targets.push_back(c.engine.table_diagram(id.candidates[i][0]));
       which.push_back(i);
     }
-  c.out.further_used.push_back("a Reidemeister search (" + c.engine.engine() + "'s rewrite, up to " +
-                               std::to_string(extra) + " extra crossing(s)) towards the candidates' table diagrams");
+  c.out.further_used.push_back(c.engine.search_text(extra) + " towards the candidates' table diagrams");
   if (const auto hit = c.engine.reidemeister_search(id.diagram, targets, extra)) {
     const KnotFactorisation found = id.candidates[which[*hit]];
     c.out.decided_by.push_back("Reidemeister moves turn the diagram into the table's diagram of " +

@@ -33,6 +33,10 @@ class KnotRefinements {
   virtual bool complement_is_solid_torus(const KnotDiagram& diagram) const = 0;
   // What the engine can do: an engine without them says so, and the name stays "not proven".
   virtual bool has_covers() const { return true; }
+  // How the naming names its Reidemeister search.
+  virtual std::string search_text(int extra) const {
+    return "a Reidemeister search (" + engine() + "'s rewrite, up to " + std::to_string(extra) + " extra crossing(s))";
+  }
   virtual bool has_unknot_recognition() const { return true; }
 };
 // Regina's (only in a build with Regina: S4D_WITH_REGINA).

@@ -256,20 +256,20 @@ char base64_char(unsigned v) {
 
 }  // namespace
 
-std::string knot_sig(const KnotDiagram& d) {
+std::string knot_sig(const KnotDiagram& d, bool reflection) {
   if (d.component_count() != 1) throw Error("a knot signature is written for knots only");
   const auto& comp = d.components[0];
   const int n = d.crossing_count();
   const int len = static_cast<int>(comp.size());
   std::vector<SigStep> best, cur(len);
   std::vector<int> image(n);
-  for (int flip_sign = 0; flip_sign < 2; ++flip_sign)
+  for (int flip_sign = 0; flip_sign < (reflection ? 2 : 1); ++flip_sign)
     for (int flip_strands = 0; flip_strands < 2; ++flip_strands)
       for (int reverse = 0; reverse < 2; ++reverse)
         for (int i0 = 0; i0 < len; ++i0) {
           const Passage& first = d.passages[comp[i0]];
           // Reflection lets every signature start at a positive crossing.
-          if ((flip_sign ? -1 : 1) * d.crossings[first.crossing].sign < 0) continue;
+          if (reflection && (flip_sign ? -1 : 1) * d.crossings[first.crossing].sign < 0) continue;
           // Start on the upper strand (the lower one when turned over).
           if (static_cast<int>(first.over) == flip_strands) continue;
           std::fill(image.begin(), image.end(), -1);

@@ -29,9 +29,9 @@ std::string dt_text(const KnotDiagram& d, bool alphabetical);
 
 namespace s4d {
 
-// Regina's knot signature of a knot diagram (Link::knotSig with reflection and reversal allowed):
-// the least traversal over every start, direction, turning over and reflection, in Regina's
+// Regina's knot signature of a knot diagram (Link::knotSig(reflection, true)): the least traversal
+// over every start, direction, turning over and (when `reflection`) mirror image, in Regina's
 // text. Equal signatures: the same diagram up to those symmetries. Error for a link.
-std::string knot_sig(const KnotDiagram& d);
+std::string knot_sig(const KnotDiagram& d, bool reflection = true);
 
 }  // namespace s4d

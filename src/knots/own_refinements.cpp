@@ -21,6 +21,9 @@ constexpr std::size_t kSearchBudget = 4000;
 class OwnRefinements final : public KnotRefinements {
  public:
   std::string engine() const override { return "own engine"; }
+  std::string search_text(int) const override {
+    return "a Reidemeister search (own engine: R3 moves with R1/R2 removal, no extra crossings)";
+  }
 
   KnotDiagram table_diagram(const KnotFactor& f) const override {
     KnotDiagram d = diagram_from_knot_sig(f.entry->sig);
@@ -34,7 +37,8 @@ class OwnRefinements final : public KnotRefinements {
   std::optional<std::size_t> reidemeister_search(const KnotDiagram& diagram, const std::vector<KnotDiagram>& targets,
                                                  int) const override {
     std::vector<std::string> sigs;
-    for (const KnotDiagram& t : targets) sigs.push_back(knot_sig(simplify_diagram(t)));
+    // Without reflection: a diagram reached proves the knot, not just the knot up to mirror image.
+    for (const KnotDiagram& t : targets) sigs.push_back(knot_sig(simplify_diagram(t), false));
     std::set<std::string> seen;
     std::deque<GaussDiagram> queue{simplify_gauss(GaussDiagram::of(diagram))};
     while (!queue.empty() && seen.size() < kSearchBudget) {
@@ -42,7 +46,7 @@ class OwnRefinements final : public KnotRefinements {
       queue.pop_front();
       const KnotDiagram d = g.diagram();
       if (d.component_count() != 1) continue;
-      const std::string sig = knot_sig(d);
+      const std::string sig = knot_sig(d, false);
       if (!seen.insert(sig).second) continue;
       if (const auto it = std::find(sigs.begin(), sigs.end(), sig); it != sigs.end())
         return static_cast<std::size_t>(it - sigs.begin());
