@@ -160,4 +160,50 @@ std::unique_ptr<World<D>> folded_cloth_on_table(int n) {
   return w;
 }
 
+// The upper layer's free edge (row n − 1), held by the hand: pinned and slid along the fold's axis
+// (p[2]) 3 cm over 1 s and back over the next, smoothly, from `start` s on. The upper layer slides
+// across the lower one: every pair between the layers changes, the case a global bound of the
+// motion pays for in full (issue 36).
+inline constexpr double kDragDistance = 0.03;  // m
+inline constexpr double kDragSeconds = 1.0;   // each way
+
+template <int D>
+void grab_free_edge(World<D>& w, int n) {
+  for (int j = 0; j < n; ++j) w.pin((n - 1) * n + j, w.positions()[static_cast<std::size_t>((n - 1) * n + j)]);
+}
+
+// Where the free edge is carried at time t (grab_free_edge at `start` recorded `grabbed`).
+template <int D>
+void drag_free_edge(World<D>& w, int n, const std::vector<Vec<D>>& grabbed, double start, double t) {
+  const double u = std::clamp((t - start) / kDragSeconds, 0.0, 2.0);
+  const double s = u <= 1 ? u * u * (3 - 2 * u) : 1 - (u - 1) * (u - 1) * (3 - 2 * (u - 1));
+  for (int j = 0; j < n; ++j) {
+    Vec<D> p = grabbed[static_cast<std::size_t>(j)];
+    p[2] += kDragDistance * s;
+    w.set_target((n - 1) * n + j, p);
+  }
+}
+
+// The folded cloth settled for `settle` steps, its free edge then grabbed: drag(t) moves it.
+template <int D>
+struct FoldedDrag {
+  std::unique_ptr<World<D>> world;
+  int n = 0;
+  double start = 0;
+  std::vector<Vec<D>> grabbed;
+  FoldedDrag(int n_, int settle, bool persistent) : world(folded_cloth_on_table<D>(n_)), n(n_) {
+    Model<D> m = world->model();
+    m.params.persistent_contacts = persistent;
+    world->set_model(std::move(m));
+    for (int s = 0; s < settle; ++s) world->step();
+    grab_free_edge(*world, n);
+    for (int j = 0; j < n; ++j) grabbed.push_back(world->positions()[static_cast<std::size_t>((n - 1) * n + j)]);
+    start = world->data().time;
+  }
+  void step() {
+    drag_free_edge(*world, n, grabbed, start, world->data().time);
+    world->step();
+  }
+};
+
 }  // namespace s4d::bench

@@ -1,10 +1,11 @@
 // Counts the instructions of the figures issues 4 and 5 track, under callgrind: one physics step
-// of the crumpled 4D cloth (or of the folded one, resting on itself), one stepping "pairs within
+// of the crumpled 4D cloth (or of the folded one, resting on itself or its upper layer dragged
+// across the lower), one stepping "pairs within
 // δ" query and one stepping earliest-impact query on the crumpled grid. Wall-clock runs on this VM
 // swing by ±25 %; instruction counts repeat exactly, so they are what a change is judged by
 // (scripts/count-instructions.sh runs it).
 //
-// Usage: count_instructions physics|folded|pairs|impact [--n 64] [--warmup W] [--steps S] [--fresh 1]
+// Usage: count_instructions physics|folded|drag|pairs|impact [--n 64] [--warmup W] [--steps S] [--fresh 1]
 // Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
 // their mean wall time as well.
 #include <chrono>
@@ -105,6 +106,20 @@ double folded(const Options& o) {
   return ms;
 }
 
+// The folded cloth's upper layer dragged across the lower (cloth_scene.hpp's FoldedDrag): 200
+// steps settling, then the drag's steps (warm-up 0 by default: its first 2 s are the drag).
+double drag(const Options& o) {
+  FoldedDrag<4> d(o.n, 200, !o.fresh);
+  const double ms = measure(o, 0, [&](bool timed) { return run(timed, [&] { d.step(); }); });
+  std::printf("drag: state hash %016llx after %lld steps, %d contacts in the last\n",
+              static_cast<unsigned long long>(state_hash(d.world->positions())),
+              static_cast<long long>(d.world->data().steps), d.world->data().last_contacts);
+  const ContactCacheStats cs = d.world->contact_stats();
+  std::printf("drag: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances\n",
+              cs.searches, cs.solves, cs.carried, d.world->exact_distances());
+  return ms;
+}
+
 double pairs(const Options& o) {
   SelfProximity<4, 3> q(grid_triangles(o.n));
   std::vector<ProximityPair<4>> out;
@@ -134,7 +149,7 @@ double impact(const Options& o) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: count_instructions physics|folded|pairs|impact [--n N] [--warmup W] [--steps S] [--fresh 1]\n");
+               "usage: count_instructions physics|folded|drag|pairs|impact [--n N] [--warmup W] [--steps S] [--fresh 1]\n");
   return 2;
 }
 
@@ -159,6 +174,7 @@ int main(int argc, char** argv) {
   double ms = 0;
   if (o.what == "physics") ms = physics(o);
   else if (o.what == "folded") ms = folded(o);
+  else if (o.what == "drag") ms = drag(o);
   else if (o.what == "pairs") ms = pairs(o);
   else if (o.what == "impact") ms = impact(o);
   else return usage();

@@ -152,6 +152,45 @@ void BM_KnotDrag500Step(benchmark::State& state) {
   state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_KnotDrag500Step)->Iterations(3000)->Unit(benchmark::kMillisecond);
+// The folded cloth's upper layer dragged 3 cm across the lower and back over 2 s by its free edge
+// (cloth_scene.hpp's FoldedDrag; issue 36): the steps of the whole drag, timed together.
+// range(1) as in the folded step.
+void BM_Cloth4DFoldedDragStep(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  bench::FoldedDrag<4> d(n, 200, state.range(1) != 0);
+  const int steps = static_cast<int>(2 * bench::kDragSeconds / d.world->model().params.time_step + 0.5);
+  double contacts = 0, seconds = 0;
+  int bad = 0;
+  const long long searches0 = d.world->contact_stats().searches, exact0 = d.world->exact_distances();
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int s = 0; s < steps; ++s) {
+      d.step();
+      contacts += d.world->data().last_contacts;
+      if (s % 500 == 499) {
+        state.PauseTiming();
+        bad = std::max(bad, pass_throughs<4>(d.world->positions(), d.world->model().triangles));
+        state.ResumeTiming();
+      }
+    }
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  const double total = static_cast<double>(state.iterations()) * steps;
+  state.counters["ms_per_step"] = 1e3 * seconds / total;
+  state.counters["x_real_time"] = total * d.world->model().params.time_step / seconds;
+  state.counters["contacts_per_step"] = contacts / total;
+  state.counters["searches_per_step"] = static_cast<double>(d.world->contact_stats().searches - searches0) / total;
+  state.counters["exact_per_step"] = static_cast<double>(d.world->exact_distances() - exact0) / total;
+  state.counters["pass_throughs"] = bad;
+}
+BENCHMARK(BM_Cloth4DFoldedDragStep)
+    ->ArgNames({"n", "persistent"})
+    ->Args({32, 0})
+    ->Args({32, 1})
+    ->Args({64, 0})
+    ->Args({64, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 // [SECTION] Peer: the same 3D cloth, grid springs, self-collision on, 1000 steps of 1 ms.
 constexpr int kPeerSteps = 1000;
