@@ -17,10 +17,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <thread>
 #include <utility>
 #include <nlohmann/json.hpp>
 
+#include "app/browser.hpp"
 #include "app/dock.hpp"
 #include "app/haptics_window.hpp"
 #include "app/hint_markers.hpp"
@@ -36,6 +38,7 @@
 #include "interact/tools/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
 #include "core/stop_signal.hpp"
+#include "core/threads.hpp"
 #include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/image.hpp"
@@ -197,7 +200,7 @@ class GuiApp {
  public:
   GuiApp(GLFWwindow* window, const GuiOptions& options, std::vector<InputEvent> script)
       : window_(window), options_(options), knot_panels_(options.exercise_seed),
-        autosaver_({options.autosave, options.autosave_seconds, 3}) {
+        autosaver_({options.autosave, options.autosave_seconds, 3, persist_browser_files}) {
     input_.attach(window);
     input_.set_script(std::move(script));
     connect_session();
@@ -209,45 +212,51 @@ class GuiApp {
     objects_seen_ = model_.scene().objects.size();
   }
 
-  // Runs until the window is closed, the user quits or the frame count is reached; returns the
-  // process exit code.
-  int run() {
-    for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
-      if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, marked unfinished to be offered back
-        const bool save = !model_.pending_restore && options_.autosave_seconds > 0;
-        if (save) autosaver_.save_now(model_.session, false, signal_name(stop_signal()));
-        std::cerr << "shadow4d: " << signal_name(stop_signal()) << ": the window closed"
-                  << (save ? "; its work is in " + autosaver_.path().string() : std::string()) << "\n";
-        model_.session.close();
-        return exit_code_;
-      }
-      glfwPollEvents();
-      update_ui_scale();
-      take_script_events();
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      input_.write_to_imgui();
-      ImGui::NewFrame();
-      lay_out(window_size(window_));
-      update_session();
-      const ToolInput ti = tool_input();
-      sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
-      take_marked_sheet();
-      route_input(model_, routing_, input_, ti, knot_panels_);
-      draw_panels();
-      keep_messages();
-      ImGui::Render();
-      const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
-      draw_scene_and_shots(last);
-      if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
-      model_.knot_panel_name = knot_panels_.shown_name();
-      for (const std::string& path : dumps_)
-        dump_state(model_, knot_panels_, slice_panel_, hints_, path, renderer_.camera(), frame);
-      dumps_.clear();
-      glfwSwapBuffers(window_);
-      if (last) break;
+  // One frame of the loop: false when the window is done (closed, quit, the frame count reached,
+  // a signal), finish() then ends it. The web page's frame loop calls this from the browser's.
+  bool frame() {
+    if (glfwWindowShouldClose(window_) || model_.quit) return false;
+    const int frame = ++frames_;
+    if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, marked unfinished to be offered back
+      const bool save = !model_.pending_restore && options_.autosave_seconds > 0;
+      if (save) autosaver_.save_now(model_.session, false, signal_name(stop_signal()));
+      std::cerr << "shadow4d: " << signal_name(stop_signal()) << ": the window closed"
+                << (save ? "; its work is in " + autosaver_.path().string() : std::string()) << "\n";
+      stopped_ = true;
+      return false;
     }
-    if (!model_.pending_restore && options_.autosave_seconds > 0) autosaver_.save_now(model_.session, true);
+    glfwPollEvents();
+    update_ui_scale();
+    take_script_events();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    input_.write_to_imgui();
+    ImGui::NewFrame();
+    lay_out(window_size(window_));
+    update_session();
+    const ToolInput ti = tool_input();
+    sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
+    take_marked_sheet();
+    route_input(model_, routing_, input_, ti, knot_panels_);
+    draw_panels();
+    keep_messages();
+    ImGui::Render();
+    const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
+    draw_scene_and_shots(last);
+    if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
+    model_.knot_panel_name = knot_panels_.shown_name();
+    for (const std::string& path : dumps_)
+      dump_state(model_, knot_panels_, slice_panel_, hints_, path, renderer_.camera(), frame);
+    dumps_.clear();
+    glfwSwapBuffers(window_);
+    return !last;
+  }
+
+  // After the last frame: the autosave of a clean quit (not after a signal, whose was written),
+  // and the simulation stopped. Returns the process exit code.
+  int finish() {
+    if (!stopped_ && !model_.pending_restore && options_.autosave_seconds > 0)
+      autosaver_.save_now(model_.session, true);
     model_.session.close();
     return exit_code_;
   }
@@ -277,6 +286,9 @@ class GuiApp {
       f.tool_settings = tool_settings(model_);
     };
     model_.session_options.device = options_.device.empty() ? "mouse" : options_.device;
+    // Without threads (the web page) the frame loop steps the haptic loop and the World.
+    model_.session_options.threaded = kHaveThreads;
+    model_.session_options.async_physics = kHaveThreads;
   }
 
   void open_first() {
@@ -433,6 +445,9 @@ class GuiApp {
   }
 
   void update_session() {
+    const double now = glfwGetTime();  // without threads the frame loop steps the simulation
+    model_.session.run_owned_ticks(now - last_frame_time_);
+    last_frame_time_ = now;
     model_.session.refresh();
     hints_.update(model_, glfwGetTime());
     if (!model_.pending_settings.empty() && model_.session.snapshot()) {  // a session's hand settings
@@ -566,6 +581,9 @@ class GuiApp {
   double wait_until_ = -1;  // wait-time: the simulated time the script waits for
   std::chrono::steady_clock::time_point wait_start_{};
   int exit_code_ = 0;
+  int frames_ = 0;
+  bool stopped_ = false;         // a signal ended the run (its autosave is written)
+  double last_frame_time_ = 0;   // glfwGetTime() of the last frame, for run_owned_ticks
 };
 
 // A window with an OpenGL 3.3 core context, or null (said on stderr).
@@ -617,18 +635,27 @@ int run_gui_app(const GuiOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
   ImGui_ImplGlfw_InitForOpenGL(window, false);  // WindowInput installs the callbacks
+  // The ImGui backend's shaders: GLSL 3.30 on the desktop, GLSL ES 3.00 in the web page.
+#ifdef S4D_GLES
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+#else
   ImGui_ImplOpenGL3_Init("#version 330 core");
-  int exit_code = 0;
-  {
-    GuiApp app(window, options, std::move(script));
-    exit_code = app.run();
-  }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
-  return exit_code;
+#endif
+  // The window lives as long as its loop: until run_frames returns on the desktop, as long as
+  // the page in a browser (where run_frames returns at once and the browser calls the frames).
+  auto* app = new GuiApp(window, options, std::move(script));
+  auto exit_code = std::make_shared<int>(0);
+  run_frames([app] { return app->frame(); },
+             [app, window, exit_code] {
+               *exit_code = app->finish();
+               delete app;
+               ImGui_ImplOpenGL3_Shutdown();
+               ImGui_ImplGlfw_Shutdown();
+               ImGui::DestroyContext();
+               glfwDestroyWindow(window);
+               glfwTerminate();
+             });
+  return *exit_code;  // the page's: 0, its window still running
 }
 
 }  // namespace s4d

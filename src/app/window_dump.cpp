@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/dock.hpp"
@@ -26,6 +27,9 @@ void dump_simulation(Json& j, Session& s, const Camera& camera, const Rect& view
     const SceneStatus& st = snap->status;
     j["sim_time"] = st.sim_time;
     j["sim_steps"] = st.sim_steps;
+    // The Simulation panel's figures: simulated seconds per wall second over the last second.
+    j["real_time_ratio"] = s.rates().real_time_ratio;
+    j["steps_per_second"] = s.rates().steps_per_second;
     j["playing"] = st.playing;
     j["held_vertex"] = st.held_vertex;
     j["grab_mode"] = st.grab_mode;
@@ -203,6 +207,10 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
     j["restore_offer"] = {{"opened", model.pending_restore->opened}, {"saved_at", model.pending_restore->saved_at},
                           {"closed_by", model.pending_restore->closed_by}};
   j["history"] = model.session.history().done_labels();
+  if (path == "-") {  // one line on the standard output: the web page's console, where a test reads it
+    std::cout << "dump " << j.dump() << std::endl;
+    return;
+  }
   std::ofstream out(path);
   out << j.dump(1) << "\n";
   if (!out) model.error = "cannot write " + path;

@@ -38,15 +38,12 @@ KnotDiagram diagram_from_dt(const std::string& code) {
   }
 }
 
-std::string pd_list(const KnotDiagram& diagram) {
-  std::string s = "[";
-  bool first = true;
-  for (const auto& x : diagram.pd()) {
-    s += std::string(first ? "" : ",") + "[" + std::to_string(x[0]) + "," + std::to_string(x[1]) + "," +
-         std::to_string(x[2]) + "," + std::to_string(x[3]) + "]";
-    first = false;
+KnotDiagram diagram_from_knot_sig(const std::string& sig) {
+  try {
+    return diagram_from_regina(regina::Link::fromKnotSig(sig));
+  } catch (const regina::InvalidArgument& e) {
+    throw Error("not a knot signature ('" + sig + "'): " + e.what());
   }
-  return s + "]";
 }
 
 std::string dt_code(const KnotDiagram& diagram) {

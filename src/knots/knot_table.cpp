@@ -12,7 +12,7 @@
 #include "core/data_paths.hpp"
 #include "core/error.hpp"
 #include "knots/braid_closure.hpp"
-#include "knots/regina_link.hpp"
+#include "knots/diagram_codes.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
 #include "shape/knot_curves.hpp"
@@ -92,8 +92,8 @@ int leading_number(const std::string& s) {
 
 KnotDiagram link_diagram(const LinkTableEntry& e) {
   try {
-    return diagram_from_regina(regina::Link::fromPD(e.pd));
-  } catch (const regina::InvalidArgument& ex) {
+    return diagram_from_pd(e.pd);
+  } catch (const Error& ex) {
     throw Error("the link table's PD code of " + e.name + " is unreadable: " + ex.what());
   }
 }
@@ -230,8 +230,8 @@ TableKnot table_knot(const std::string& name_in, const KnotIndex* index_in, cons
     if (e->sig.empty())
       throw Error("the knot index has no diagram for " + t.name + " (an old index file: rebuild it)");
     try {
-      t.diagram = diagram_from_regina(regina::Link::fromKnotSig(e->sig));
-    } catch (const regina::InvalidArgument& ex) {
+      t.diagram = diagram_from_knot_sig(e->sig);
+    } catch (const Error& ex) {
       throw Error("the knot index's diagram of " + t.name + " is unreadable: " + ex.what());
     }
   }

@@ -3,8 +3,7 @@
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/gl.hpp"
 
 #include <algorithm>
 #include <cstring>

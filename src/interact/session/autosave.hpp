@@ -8,6 +8,7 @@
 #pragma once
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -24,6 +25,9 @@ struct AutosaveOptions {
   std::filesystem::path path;  // the first slot; empty: default_autosave_path()
   double interval = 30;        // s between autosaves; 0 turns them off
   int keep = 3;                // older autosaves kept beside it (FILE.1 ...)
+  // Called after each successful write, on the writing thread: the web page copies its files to
+  // the browser's storage there (IndexedDB).
+  std::function<void()> written;
 };
 
 // $XDG_STATE_HOME/shadow4d/autosave.s4d, or ~/.local/state/shadow4d/autosave.s4d, or a file in

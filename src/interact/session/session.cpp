@@ -522,6 +522,16 @@ void Session::shapes_edited() {
 
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }
 
+void Session::run_owned_ticks(double seconds) {
+  if (!loop_ || options_.threaded || loop_->running() || !(seconds > 0)) return;
+  constexpr double kMostSeconds = 0.1;
+  const double rate = loop_->config().rate_hz;
+  owed_ticks_ = std::min(owed_ticks_ + seconds * rate, kMostSeconds * rate);
+  const auto n = static_cast<std::uint64_t>(owed_ticks_);
+  owed_ticks_ -= static_cast<double>(n);
+  if (n > 0) loop_->run_ticks(n);
+}
+
 bool Session::send(const live::Request& request) { return loop_ && loop_->send(live::command(request)); }
 
 void Session::set_device_button(DeviceButton action, int carry_rings) {

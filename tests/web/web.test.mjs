@@ -1,0 +1,165 @@
+// The web page in Debian's headless Chromium, driven as the desktop window's tests drive it: the
+// same timed input file (passed by address, ?input=) and the window's dump printed to the console
+// ("dump -"). The page is served from 127.0.0.1 by a small static server here; the browser runs
+// WebGL2 through SwiftShader, with no network and no downloads of its own.
+//   node --test tests/web/            with S4D_WEB_DIR=OUTDIR of scripts/build-web.sh
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import http from 'node:http';
+import os from 'node:os';
+import path from 'node:path';
+import { chromium } from 'playwright-core';
+
+const siteDir = process.env.S4D_WEB_DIR;
+const shotDir = process.env.S4D_WEB_SHOTS || fs.mkdtempSync(path.join(os.tmpdir(), 's4d-web-shots-'));
+const inputDir = fs.mkdtempSync(path.join(os.tmpdir(), 's4d-web-input-'));
+const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
+                '.data': 'application/octet-stream', '.txt': 'text/plain', '.json': 'application/json' };
+let server, base, context, userDir;
+
+before(async () => {
+  assert.ok(siteDir && fs.existsSync(path.join(siteDir, 'index.html')),
+            'S4D_WEB_DIR must name the folder scripts/build-web.sh made');
+  server = http.createServer((req, res) => {
+    const url = new URL(req.url, 'http://127.0.0.1');
+    const rel = decodeURIComponent(url.pathname === '/' ? '/index.html' : url.pathname);
+    const root = rel.startsWith('/t/') ? inputDir : siteDir;
+    const file = path.join(root, rel.startsWith('/t/') ? rel.slice(3) : rel);
+    if (!file.startsWith(root) || !fs.existsSync(file)) { res.writeHead(404); res.end(); return; }
+    res.writeHead(200, { 'Content-Type': types[path.extname(file)] || 'application/octet-stream' });
+    fs.createReadStream(file).pipe(res);
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  base = `http://127.0.0.1:${server.address().port}`;
+  userDir = fs.mkdtempSync(path.join(os.tmpdir(), 's4d-chromium-'));
+  // Without the networking flags Chromium's own connections are refused here and it stalls.
+  context = await chromium.launchPersistentContext(userDir, {
+    executablePath: process.env.S4D_CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1280, height: 800 },
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+});
+
+after(async () => {
+  await context?.close();
+  server?.close();
+  fs.rmSync(userDir, { recursive: true, force: true });
+});
+
+// Opens the page with `query` and the input file `lines`; resolves with the page and the dumps
+// once `dumps` of them were printed (or rejects after `timeout` ms with the console's tail).
+async function runPage(name, query, lines, dumps, { timeout = 120000, page: reuse } = {}) {
+  fs.writeFileSync(path.join(inputDir, `${name}.txt`), lines.join('\n') + '\n');
+  const page = reuse || await context.newPage();
+  const out = [], console_ = [];
+  let resolveDone;
+  const done = new Promise((resolve) => { resolveDone = resolve; });
+  const onConsole = (msg) => {
+    const text = msg.text();
+    console_.push(text);
+    if (text.startsWith('dump ')) {
+      out.push(JSON.parse(text.slice(5)));
+      if (out.length >= dumps) resolveDone();
+    }
+  };
+  page.on('console', onConsole);
+  page.on('pageerror', (e) => console_.push('pageerror: ' + e.message));
+  const sep = query ? '&' : '';
+  await page.goto(`${base}/index.html?${query}${sep}input=t/${name}.txt`);
+  let timer;
+  const timedOut = new Promise((_, reject) => {
+    timer = setTimeout(() => reject(new Error(`${name}: ${out.length} of ${dumps} dumps after ${timeout} ms; ` +
+                                              `console:\n${console_.slice(-25).join('\n')}`)), timeout);
+  });
+  try {
+    await Promise.race([done, timedOut]);
+  } finally {
+    clearTimeout(timer);
+    page.off('console', onConsole);
+  }
+  return { page, dumps: out, console: console_ };
+}
+
+// The share of pixels of a screenshot that are not the background: a blank or black page is ~0.
+async function litShare(page, file) {
+  await page.screenshot({ path: file });
+  const rgba = await page.evaluate(async (src) => {
+    const img = new Image();
+    img.src = src;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    let lit = 0;
+    for (let i = 0; i < d.length; i += 4) lit += d[i] + d[i + 1] + d[i + 2] > 150 ? 1 : 0;
+    return lit / (d.length / 4);
+  }, 'data:image/png;base64,' + fs.readFileSync(file).toString('base64'));
+  return rgba;
+}
+
+// move-view takes half-sides of the 3D view from its centre, as in tests/app/gui_smoke_test.cpp.
+const viewAt = (x, y) => `move-view ${((x - 640) / 400).toFixed(5)} ${((400 - y) / 400).toFixed(5)}`;
+
+test('the start page appears with no file', async () => {
+  const { page, dumps } = await runPage('start', '', ['20 dump -'], 1);
+  assert.equal(dumps[0].start_page, true);
+  assert.ok(dumps[0].start_cards.length > 0, 'the start page offers examples');
+  assert.ok(await litShare(page, path.join(shotDir, 'start.png')) > 0.02, 'the start page is drawn');
+  await page.close();
+});
+
+const scenarios = fs.readdirSync(path.join(siteDir || '.', 'scenarios'), { withFileTypes: true })
+  .filter((e) => e.name.endsWith('.json')).map((e) => e.name);
+
+test('every scenario opens and draws', async () => {
+  assert.ok(scenarios.length >= 8, 'the site has the scenarios');
+  for (const s of scenarios) {
+    const { page, dumps } = await runPage(`open-${s}`, `open=scenarios/${s}`, ['3 key SPACE', '40 dump -'], 1);
+    const d = dumps[0];
+    assert.equal(d.error, '', `${s}: ${d.error}`);
+    assert.equal(d.physics_error, '', `${s}: ${d.physics_error}`);
+    assert.equal(d.simulating, true, `${s} simulates`);
+    assert.ok(d.sim_steps > 0, `${s}: Space played it`);
+    assert.ok(await litShare(page, path.join(shotDir, `${s}.png`)) > 0.05, `${s} is drawn`);
+    await page.close();
+  }
+});
+
+test('a grab of the spun trefoil moves the vertex, and the live check finds no true intersection', async () => {
+  const lines = ['3 key SPACE', '10 ' + viewAt(640, 400), '20 ' + viewAt(641, 400), '30 dump -', '31 press left'];
+  for (let i = 1; i <= 30; ++i) lines.push(`${31 + 2 * i} ${viewAt(641 + 4 * i, 400 - i)}`);
+  lines.push('110 dump -', '111 release left', '150 wait-sim 2', '151 dump -');
+  const { page, dumps } = await runPage('grab', 'open=scenarios/spun-trefoil-tighten.json', lines, 3);
+  const [before, during, afterRelease] = dumps;
+  assert.ok(before.hits_under_cursor >= 1, 'the cursor is over the surface');
+  const held = during.held_vertex;
+  assert.ok(held >= 0, 'the press took hold of a vertex');
+  const at = (d, v) => d.positions.slice(4 * v, 4 * v + 4);
+  const moved = Math.hypot(...at(during, held).map((x, k) => x - at(before, held)[k]));
+  assert.ok(moved > 0.15, `the held vertex followed the hand (moved ${moved})`);
+  assert.equal(afterRelease.held_vertex, -1, 'released');
+  assert.equal(afterRelease.checked, true, 'the live check ran');
+  assert.equal(during.true_intersections, 0);
+  assert.equal(afterRelease.true_intersections, 0);
+  console.log(`spun trefoil in the page: real-time ratio ${afterRelease.real_time_ratio.toFixed(2)}, ` +
+              `${afterRelease.steps_per_second.toFixed(0)} steps/s`);
+  assert.ok(await litShare(page, path.join(shotDir, 'grab.png')) > 0.05);
+  await page.close();
+});
+
+test('a session survives a reload through IndexedDB', async () => {
+  const first = await runPage('autosave', 'open=scenarios/spun-trefoil-tighten.json&autosave-seconds=1',
+                              ['3 key SPACE', '10 wait-sim 1', '11 dump -'], 1);
+  // The autosave runs every second and copies itself to IndexedDB (asynchronously): give it time.
+  await first.page.waitForTimeout(3000);
+  const again = await runPage('reload', '', ['20 dump -'], 1, { page: first.page });
+  const d = again.dumps[0];
+  assert.equal(d.restore_offered, true, 'the page offers the work the last one left');
+  assert.match(d.restore_offer.opened, /spun-trefoil-tighten/);
+  await again.page.close();
+});
