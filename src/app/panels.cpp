@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "app/browser.hpp"
 #include "app/panel_settings.hpp"
 #include "app/tool_settings.hpp"
 #include "core/error.hpp"
@@ -379,6 +380,7 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".s4d") path += ".s4d";
       write_session(model.session.save_state(), path);
       model.status = "saved the session " + path.string();
+      if (offer_download(path.string())) model.status += " (and downloaded)";
       remember(model, path.string());
     } catch (const std::exception& e) {
       model.error = e.what();
@@ -391,6 +393,7 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".json") path += ".json";
       save_scene(scene_to_save(model), path);
       model.status = "saved " + path.string();
+      if (offer_download(path.string())) model.status += " (and downloaded)";
     } catch (const std::exception& e) {
       model.error = e.what();
     }
@@ -399,6 +402,7 @@ void Panels::dialogs(GuiModel& model) {
     try {
       const auto path = p->extension() == ".txt" ? *p : std::filesystem::path(p->string() + ".txt");
       write_shape_file(model.knot.last_stroke_curve(), path);
+      offer_download(path.string());
       model.status = "saved " + path.string() + " (shadow4d knot sketch " + path.filename().string() + " --knot)";
     } catch (const std::exception& e) {
       model.error = e.what();

@@ -82,6 +82,16 @@ void on_char(GLFWwindow* w, unsigned int c) {
   self(w)->live(e);
 }
 
+// A file dropped on the window opens as File > Open would (in the web page: the user's own file,
+// which the browser hands over into the page's memory; the first of several).
+void on_drop(GLFWwindow* w, int count, const char** paths) {
+  if (count < 1 || !paths[0]) return;
+  InputEvent e;
+  e.kind = InputEvent::Kind::open;
+  e.text = paths[0];
+  self(w)->live(e);
+}
+
 void on_focus(GLFWwindow* w, int focused) { ImGui_ImplGlfw_WindowFocusCallback(w, focused); }
 void on_enter(GLFWwindow* w, int entered) { ImGui_ImplGlfw_CursorEnterCallback(w, entered); }
 
@@ -216,6 +226,7 @@ void WindowInput::attach(GLFWwindow* window) {
   glfwSetCharCallback(window, on_char);
   glfwSetWindowFocusCallback(window, on_focus);
   glfwSetCursorEnterCallback(window, on_enter);
+  glfwSetDropCallback(window, on_drop);
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   cursor_ = last_cursor_ = Vec2(x, y);
