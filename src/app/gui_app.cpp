@@ -356,7 +356,9 @@ class GuiApp {
   // that size and the style's sizes follow, before the frame begins.
   void update_ui_scale() {
     float sx = 1, sy = 1;
+#if GLFW_VERSION_MAJOR * 100 + GLFW_VERSION_MINOR >= 303  // emscripten's GLFW is 3.2: a page's canvas is in CSS pixels
     glfwGetWindowContentScale(window_, &sx, &sy);
+#endif
     const float monitor = options_.ui_scale > 0 ? options_.ui_scale : std::max(1.0f, std::max(sx, sy));
     if (!std::isfinite(model_.ui_scale_setting)) model_.ui_scale_setting = 1;
     model_.ui_scale_setting = std::clamp(model_.ui_scale_setting, 0.5f, 3.0f);

@@ -4,6 +4,7 @@
 #pragma once
 #ifdef S4D_GLES
 #include <GLES3/gl3.h>
+inline void glClearDepth(double depth) { glClearDepthf(static_cast<float>(depth)); }  // ES has only the float one
 #else
 #include <GL/gl.h>
 #include <GL/glext.h>
