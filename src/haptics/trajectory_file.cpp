@@ -26,7 +26,7 @@ constexpr const char* kMagic = "# shadow4d haptic trajectory v1";
 
 void append_number(std::string& out, double v) {
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest exact round-trip
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);  // shortest exact round-trip
   out.push_back(' ');
   out.append(buf, r.ptr);
 }

@@ -60,13 +60,13 @@ void write_text_file(const std::filesystem::path& path, std::string_view text) {
 
 std::string format_double(double v) {
   char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 
 void append_double(std::string& out, double v) {
   char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }
 
