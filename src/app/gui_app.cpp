@@ -200,7 +200,8 @@ class GuiApp {
  public:
   GuiApp(GLFWwindow* window, const GuiOptions& options, std::vector<InputEvent> script)
       : window_(window), options_(options), knot_panels_(options.exercise_seed),
-        autosaver_({options.autosave, options.autosave_seconds, 3, persist_browser_files}) {
+        autosaver_({options.autosave, options.autosave_seconds, 3}) {
+    autosaver_.set_written(persist_browser_files);  // the web page's autosaves go on to IndexedDB
     input_.attach(window);
     input_.set_script(std::move(script));
     connect_session();

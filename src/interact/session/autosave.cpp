@@ -151,7 +151,7 @@ void Autosaver::write(SessionFile f) {
     write_session(f, path_, options_.keep, &texts_);
     error_.clear();
     ++saves_;
-    if (options_.written) options_.written();
+    if (written_) written_();
   } catch (const std::exception& e) {
     error_ = e.what();
   }

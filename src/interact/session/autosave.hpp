@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "io/file_lock.hpp"
 #include "io/session_file.hpp"
@@ -25,9 +26,6 @@ struct AutosaveOptions {
   std::filesystem::path path;  // the first slot; empty: default_autosave_path()
   double interval = 30;        // s between autosaves; 0 turns them off
   int keep = 3;                // older autosaves kept beside it (FILE.1 ...)
-  // Called after each successful write, on the writing thread: the web page copies its files to
-  // the browser's storage there (IndexedDB).
-  std::function<void()> written;
 };
 
 // $XDG_STATE_HOME/shadow4d/autosave.s4d, or ~/.local/state/shadow4d/autosave.s4d, or a file in
@@ -65,6 +63,9 @@ class Autosaver {
   bool save_now(const Session& session, bool clean_exit, const std::string& closed_by = {});
   // This run's own autosave file (its slot).
   const std::filesystem::path& path() const { return path_; }
+  // Called after each successful write, on the writing thread (set before the first tick): the
+  // web page copies its autosave folder to the browser's storage there (IndexedDB).
+  void set_written(std::function<void()> written) { written_ = std::move(written); }
   double interval() const { return options_.interval; }
   std::string last_error() const;
   int saves() const;
@@ -92,6 +93,7 @@ class Autosaver {
   std::string error_;
   int saves_ = 0;
   std::thread worker_;
+  std::function<void()> written_;
 };
 
 }  // namespace s4d
