@@ -96,6 +96,32 @@ BENCHMARK(BM_KnotInfoLive500)->DenseRange(0, 6)->Unit(benchmark::kMillisecond)->
       return *std::max_element(v.begin(), v.end());
     });
 
+// The same curves named by each engine (issue 35: the web page's own engine against Regina), the
+// live path (fast, as the panel names while dragging) and in full. Args: case, engine (0 Regina,
+// 1 own), fast.
+void BM_NameKnot500ByEngine(benchmark::State& state) {
+  const Case& c = table_cases()[state.range(0)];
+  KnotIndex::shipped();
+  NamingOptions o;
+  o.engine = state.range(1) == 0 ? KnotEngine::kRegina : KnotEngine::kOwn;
+  o.fast = state.range(2) != 0;
+  if (o.engine == KnotEngine::kRegina && !regina_available()) {
+    state.SkipWithError("built without Regina");
+    return;
+  }
+  KnotNaming n = name_knot(c.curve, o);  // the table's cover signatures cached, as in a session
+  for (auto _ : state) {
+    n = name_knot(c.curve, o);
+    benchmark::DoNotOptimize(n.identification.name);
+  }
+  state.SetLabel(std::string(c.name) + " [" + engine_name(o.engine) + (o.fast ? ", fast" : "") + "] -> " +
+                 n.headline());
+}
+BENCHMARK(BM_NameKnot500ByEngine)
+    ->ArgsProduct({benchmark::CreateDenseRange(0, 6, 1), {0, 1}, {1, 0}})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(0.2);
+
 // 500-point curves of table links (the Borromean rings; 4 and 5 components; 11 crossings with a
 // split alternative to rule out), named live as the panel does.
 const std::vector<Case>& link_cases() {

@@ -27,23 +27,40 @@ mkdir -p "$build/fuzz/artifacts"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 failed=()
-for t in "${targets[@]}"; do
-  [[ -n "${seeds[$t]:-}" ]] || { echo "fuzz.sh: unknown target '$t'" >&2; exit 1; }
-  corpus="$build/fuzz/corpus/$t"
+# One target: its summary line goes to BUILD/fuzz/T.result, its status is the run's.
+fuzz_one() {
+  local t=$1 corpus="$build/fuzz/corpus/$1" log="$build/fuzz/$1.log"
   mkdir -p "$corpus"
-  dirs=(${seeds[$t]})
+  local dirs=(${seeds[$t]})
   [[ -d tests/data/fuzz_regressions/$t ]] && dirs+=("tests/data/fuzz_regressions/$t")
-  log="$build/fuzz/$t.log"
   # -timeout: one input may take this long (s); -rss_limit_mb / -malloc_limit_mb: a parser must
   # refuse a file that asks for more memory than this rather than allocate it.
   if "$build/fuzz/${t}_fuzz" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -malloc_limit_mb=1024 \
       -print_final_stats=1 -artifact_prefix="$build/fuzz/artifacts/$t-" "$corpus" "${dirs[@]}" > "$log" 2>&1; then
-    echo "fuzz.sh: $t: $(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$') runs in ${seconds} s, no crash; corpus $(ls "$corpus" | wc -l) inputs"
+    echo "fuzz.sh: $t: $(grep -m1 -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$') runs in ${seconds} s, no crash; corpus $(ls "$corpus" | wc -l) inputs" > "$build/fuzz/$t.result"
   else
-    echo "fuzz.sh: $t FAILED (log: $log):"
-    grep -m1 -A40 -E 'ERROR: (AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|libFuzzer)|runtime error|terminate called|==ERROR' "$log" || tail -40 "$log"
-    failed+=("$t")
+    { echo "fuzz.sh: $t FAILED (log: $log):"
+      grep -m1 -A40 -E 'ERROR: (AddressSanitizer|LeakSanitizer|UndefinedBehaviorSanitizer|libFuzzer)|runtime error|terminate called|==ERROR' "$log" || tail -40 "$log"
+    } > "$build/fuzz/$t.result"
+    return 1
   fi
+}
+for t in "${targets[@]}"; do
+  [[ -n "${seeds[$t]:-}" ]] || { echo "fuzz.sh: unknown target '$t'" >&2; exit 1; }
+done
+# As many targets at once as there are cores (S4D_FUZZ_JOBS): each is one process, so two cores
+# fuzz two targets in the time of one, each for its full time.
+parallel=${S4D_FUZZ_JOBS:-$(nproc)}
+declare -A pid_of=()
+for t in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= parallel)); do wait -n || true; done
+  rm -f "$build/fuzz/$t.result"
+  fuzz_one "$t" &
+  pid_of[$t]=$!
+done
+for t in "${targets[@]}"; do
+  wait "${pid_of[$t]}" || failed+=("$t")
+  cat "$build/fuzz/$t.result" 2>/dev/null || echo "fuzz.sh: $t left no result"
 done
 if ((${#failed[@]})); then
   echo "fuzz.sh: ${#failed[@]} target(s) found a problem: ${failed[*]} (inputs in $build/fuzz/artifacts/)"

@@ -67,4 +67,4 @@ phase "asan: tests" ctest --preset asan -j"$jobs"
 phase "tsan: configure" cmake --preset tsan
 phase "tsan: build" cmake --build --preset tsan -j"$jobs"
 phase "tsan: tests" ctest --preset tsan -j"$jobs"
-phase "fuzz: 9 targets x 20 s" scripts/fuzz.sh build-asan 20
+phase "fuzz: 9 targets x 20 s, 2 at once" scripts/fuzz.sh build-asan 20

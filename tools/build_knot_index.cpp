@@ -34,11 +34,12 @@ using namespace s4d;
 
 namespace {
 
-// Regina's Laurent2 hides its terms; the exponents of an n-crossing knot's HOMFLY-PT polynomial
-// lie in [-(n + 2), n + 2].
+// Regina's Laurent2 hides its terms. By Morton's bounds the powers of alpha of an n-crossing
+// diagram with s Seifert circles lie within writhe -+ (s - 1), so within [-2n, 2n] (n + 2 was too
+// small: 11a_263's HOMFLY-PT has alpha^-14); the powers of z within [0, n].
 Laurent2 homfly_of(const regina::Link& link) {
   const auto& p = link.homflyAZ();
-  const long bound = static_cast<long>(link.size()) + 2;
+  const long bound = 2 * static_cast<long>(link.size()) + 2;
   Laurent2 r;
   for (long i = -bound; i <= bound; ++i)
     for (long j = -bound; j <= bound; ++j)

@@ -17,15 +17,18 @@ void add_knot_identify(CLI::App& knot) {
   struct Args {
     KnotCurveArgs curve;
     bool fast = false;
+    std::string engine;
   };
   auto a = std::make_shared<Args>();
   auto* identify = knot.add_subcommand("identify", "name the knot or link of a curve, and say what decided it");
   add_curve_args(identify, a->curve);
   add_fast_flag(identify, a->fast);
+  add_engine_option(identify, a->engine);
   identify->callback([a] {
     NamingOptions o;
     o.frame = parse_view(a->curve.view);
     o.fast = a->fast;
+    o.engine = engine_of(a->engine);
     const auto t0 = std::chrono::steady_clock::now();
     const KnotNaming n = name_knot(load_knot_curve(a->curve.file), o);
     const double ms =
@@ -44,12 +47,14 @@ void add_knot_code(CLI::App& knot) {
   struct Args {
     KnotCurveArgs curve;
     bool pd = false, dt = false;
+    std::string engine;
   };
   auto a = std::make_shared<Args>();
   auto* code = knot.add_subcommand("code", "Gauss, PD and DT codes of a curve's diagram in a view");
   add_curve_args(code, a->curve);
   code->add_flag("--pd", a->pd, "only the PD code, as `knot make --pd` reads it: [[1,5,2,4],...]");
   code->add_flag("--dt", a->dt, "only the DT code (knots), as `knot make --dt` reads it: 4 6 2");
+  add_engine_option(code, a->engine);
   code->callback([a] {
     Frame<3> used;
     const KnotDiagram d = diagram_from_curve(load_knot_curve(a->curve.file), parse_view(a->curve.view), {}, &used);
@@ -58,7 +63,7 @@ void add_knot_code(CLI::App& knot) {
       if (a->dt) std::cout << dt_code(d) << "\n";
       return;
     }
-    const json j = codes_json(d);
+    const json j = codes_json(d, engine_of(a->engine));
     if (a->curve.json_out) {
       std::cout << j.dump(2) << "\n";
       return;
@@ -81,6 +86,7 @@ void print_info(const KnotInfo& k) {
   for (const auto& x : k.decided_by) std::cout << "decided by: " << x << "\n";
   for (const auto& x : k.further_used) std::cout << "further invariant tried: " << x << "\n";
   for (const auto& x : k.skipped) std::cout << "skipped (--fast): " << x << "\n";
+  for (const auto& x : k.unavailable) std::cout << "unavailable without Regina: " << x << "\n";
   std::cout << "crossings: " << k.view_crossings << " in this view, " << k.simplified_crossings
             << " after simplification\n"
             << "Gauss code: " << k.gauss_code << "\n"
@@ -96,14 +102,17 @@ void add_knot_info(CLI::App& knot) {
   struct Args {
     KnotCurveArgs curve;
     bool fast = false;
+    std::string engine;
   };
   auto a = std::make_shared<Args>();
   auto* info = knot.add_subcommand("info", "the live information panel of a curve in a view");
   add_curve_args(info, a->curve);
   add_fast_flag(info, a->fast);
+  add_engine_option(info, a->engine);
   info->callback([a] {
     KnotInfoOptions o;
     o.fast = a->fast;
+    o.engine = engine_of(a->engine);
     const Curve<3> c = load_knot_curve(a->curve.file);
     const KnotInfo k =
         knot_info(c, a->curve.view.empty() ? std::nullopt : std::optional(parse_view(a->curve.view)), o);

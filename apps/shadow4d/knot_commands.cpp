@@ -24,6 +24,17 @@ void add_fast_flag(CLI::App* s, bool& fast) {
               "batch use; the name then says what was skipped");
 }
 
+void add_engine_option(CLI::App* s, std::string& engine) {
+  s->add_option("--engine", engine,
+                "knot engine: regina (the default where built with Regina) or own (the project's, as in the web "
+                "page; no covers or unknot recognition, so such names stay not proven)")
+      ->check(CLI::IsMember({"regina", "own"}));
+}
+
+KnotEngine engine_of(const std::string& option) {
+  return option.empty() ? default_knot_engine() : parse_knot_engine(option);
+}
+
 namespace {
 
 json factor_json(const KnotFactor& f) {
@@ -111,6 +122,8 @@ json naming_json(const KnotNaming& n) {
   j["decided_by"] = n.decided_by;
   j["further_used"] = n.further_used;
   j["skipped"] = n.skipped;
+  j["unavailable"] = n.unavailable;
+  j["engine"] = engine_name(n.identification.invariants.engine);
   j["chirality"] = n.chirality();
   return j;
 }
@@ -120,6 +133,7 @@ void print_naming(const KnotNaming& n) {
   for (const auto& x : n.decided_by) std::cout << "decided by: " << x << "\n";
   for (const auto& x : n.further_used) std::cout << "further invariant tried: " << x << "\n";
   for (const auto& x : n.skipped) std::cout << "skipped (--fast): " << x << "\n";
+  for (const auto& x : n.unavailable) std::cout << "unavailable without Regina: " << x << "\n";
 }
 
 json info_json(const KnotInfo& k) {
@@ -130,6 +144,8 @@ json info_json(const KnotInfo& k) {
           {"decided_by", k.decided_by},
           {"further_used", k.further_used},
           {"skipped", k.skipped},
+          {"unavailable", k.unavailable},
+          {"engine", engine_name(k.identification.invariants.engine)},
           {"view_crossings", k.view_crossings},
           {"simplified_crossings", k.simplified_crossings},
           {"gauss", k.gauss_code},
@@ -144,8 +160,8 @@ json info_json(const KnotInfo& k) {
           {"milliseconds", k.milliseconds}};
 }
 
-json codes_json(const KnotDiagram& d) {
-  const ReginaCodes r = regina_codes(d);
+json codes_json(const KnotDiagram& d, KnotEngine engine) {
+  const ReginaCodes r = regina_codes(d, engine);
   return {{"crossings", d.crossing_count()},
           {"components", d.component_count()},
           {"writhe", d.writhe()},

@@ -20,6 +20,9 @@ struct KnotCurveArgs {
 void add_curve_args(CLI::App* sub, KnotCurveArgs& args, bool with_view = true);
 // --fast: the naming skips its slow refinements (and says so).
 void add_fast_flag(CLI::App* sub, bool& fast);
+// --engine regina|own: who computes the invariants (the default: Regina where the build has it).
+void add_engine_option(CLI::App* sub, std::string& engine);
+KnotEngine engine_of(const std::string& option);
 
 nlohmann::json identification_json(const KnotIdentification& id);
 // `headline`: the name line ("" for id.headline()).
@@ -29,7 +32,7 @@ void print_identification(const KnotIdentification& id, const std::string& inden
 nlohmann::json naming_json(const KnotNaming& n);
 void print_naming(const KnotNaming& n);
 nlohmann::json info_json(const KnotInfo& k);
-nlohmann::json codes_json(const KnotDiagram& d);
+nlohmann::json codes_json(const KnotDiagram& d, KnotEngine engine = default_knot_engine());
 
 // cmd_knot_name.cpp
 void add_knot_identify(CLI::App& knot);

@@ -27,6 +27,9 @@ void ViewOptions::add_to(CLI::App& app, bool with_size) {
                "strand)");
   app.add_option("--tube-radius", tube_radius, "radius of curve tubes, scene units");
   app.add_option("--zoom", zoom, "closer (> 1) or farther (< 1) than the view that fits the scene");
+  app.add_option("--perspective", perspective,
+                 "the shadow of R^4 in perspective from a 4D eye at distance D along w (scene units, "
+                 "> 0; nearer in w is drawn larger), instead of the orthographic shadow");
   app.add_option("--opacity", opacity,
                  "surfaces' opacity in [0.05, 1]: below 1 a sheet behind shows through (1 = opaque)");
 }
@@ -40,17 +43,29 @@ std::pair<int, int> ViewOptions::parsed_size() const {
   return {w, h};
 }
 
-std::string view_described(const std::string& input, const std::string& rotate) {
+std::string view_described(const std::string& input, const std::string& rotate, double perspective) {
   const bool scene_file = input.size() > 5 && input.ends_with(".json");
-  return !rotate.empty() ? "the input's frame turned " + rotate
-         : scene_file    ? "the scene's own frame (the window's first view)"
-                         : "straight along w (the window opens it turned: --rotate xw=30,zw=20 gives its view)";
+  std::string s = !rotate.empty() ? "the input's frame turned " + rotate
+                  : scene_file    ? "the scene's own frame (the window's first view)"
+                                  : "straight along w (the window opens it turned: --rotate xw=30,zw=20 gives its view)";
+  if (perspective > 0) {
+    char d[32];
+    std::snprintf(d, sizeof d, "%g", perspective);
+    s += std::string(", in perspective from a 4D eye at w = ") + d;
+  }
+  return s;
 }
 
-std::string ViewOptions::described(const std::string& input) const { return view_described(input, rotate); }
+std::string ViewOptions::described(const std::string& input) const {
+  return view_described(input, rotate, perspective.value_or(0));
+}
 
 void ViewOptions::apply(Scene& scene) const {
   apply_rotations(scene.frame, parse_rotation_list(rotate, 4));
+  if (perspective) {
+    if (const std::string e = Frame<4>::perspective_error(*perspective); !e.empty()) throw Error("--perspective: " + e);
+    scene.frame.set_perspective(*perspective);
+  }
   if (!orbit.empty()) {
     double yaw = 0, pitch = 0;
     char extra = 0;

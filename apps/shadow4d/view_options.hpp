@@ -22,6 +22,7 @@ struct ViewOptions {
   std::optional<double> tube_radius;
   std::optional<double> opacity;  // surfaces' opacity, [0.05, 1]
   std::optional<double> zoom;     // multiplies the fitted view, > 1 closer
+  std::optional<double> perspective;  // the 4D eye's distance along w (Frame::set_perspective)
 
   // Adds --size only when `with_size`.
   void add_to(CLI::App& app, bool with_size = true);
@@ -36,6 +37,7 @@ struct ViewOptions {
 };
 
 // The same for a command with only --rotate (check).
-std::string view_described(const std::string& input, const std::string& rotate);
+// A perspective distance (> 0) adds "in perspective from a 4D eye at w = D".
+std::string view_described(const std::string& input, const std::string& rotate, double perspective = 0);
 
 }  // namespace s4d::cli

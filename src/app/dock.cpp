@@ -34,6 +34,8 @@ bool Dock::begin(Side side, const char* name, bool* open, bool default_open) {
   if (!begin_column(side)) return false;
   ImGui::SetNextItemOpen(default_open, ImGuiCond_Once);
   const bool shown = open ? ImGui::CollapsingHeader(name, open) : ImGui::CollapsingHeader(name);
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  headers_now_.push_back({name, Rect{a.x, a.y, b.x - a.x, b.y - a.y}, shown});
   if (!shown) {
     ImGui::End();
     return false;
@@ -52,6 +54,7 @@ void Dock::end() {
 
 void Dock::draw_strips(bool& left_open, bool& right_open) {
   for (int i = 0; i < 2; ++i) wanted_last_[i] = std::exchange(wanted_now_[i], false);
+  headers_last_ = std::exchange(headers_now_, {});
   for (Side side : {Side::kLeft, Side::kRight}) {
     bool& open = side == Side::kLeft ? left_open : right_open;
     if (!wanted_last_[side == Side::kLeft ? 0 : 1] && open) {  // nothing to show: a bare strip

@@ -27,6 +27,13 @@ class Dock {
   // The columns' strips: the button that opens or closes each column. Drawn once a frame, after
   // the panels.
   void draw_strips(bool& left_open, bool& right_open);
+  // The sections' headers drawn this frame (the dump's `sections`: what a person clicks to open one).
+  struct Header {
+    std::string name;
+    Rect rect;
+    bool open = false;
+  };
+  const std::vector<Header>& headers() const { return headers_last_; }
   // Whether a panel asked for a place in the column last frame: an empty column folds to its strip.
   bool wanted(Side side) const { return wanted_last_[side == Side::kLeft ? 0 : 1]; }
 
@@ -34,6 +41,7 @@ class Dock {
   bool begin_column(Side side);
   Layout layout_;
   bool wanted_now_[2] = {false, false}, wanted_last_[2] = {true, true};
+  std::vector<Header> headers_now_, headers_last_;
 };
 
 // For panels laid out in a column: whether the next item of `width` pixels still fits on the

@@ -37,12 +37,14 @@
 #include "app/window_dump.hpp"
 #include "interact/tools/knot_sketch_tool.hpp"
 #include "app/window_input.hpp"
+#include "core/camera.hpp"
 #include "core/stop_signal.hpp"
 #include "core/threads.hpp"
 #include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/image.hpp"
 #include "render/renderer.hpp"
+#include "shape/shape.hpp"
 #include "interact/tools/view_edit.hpp"
 
 namespace s4d {
@@ -151,7 +153,7 @@ void sync_view(GuiModel& model, const Camera& camera, Frame<4>& sent_frame, Devi
   Session& s = model.session;
   if (!s.loop() || !s.snapshot()) return;
   const Frame<4>& f = model.scene().frame;
-  if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12) {
+  if ((f.matrix() - sent_frame.matrix()).cwiseAbs().maxCoeff() > 1e-12 || f.perspective() != sent_frame.perspective()) {
     s.send(live::SetFrame::from(f));
     sent_frame = f;
   }
@@ -183,15 +185,53 @@ ViewFit enclosing(const ViewFit& a, const ViewFit& b) {
   return f;
 }
 
-// The view's ball in the shadow: a ball of R^4 is seen through the frame (its shadow is a ball
-// of the same radius); objects of R^3 are drawn as they are.
-void frame_the_fit(GuiModel& model) {
+// The view's ball in the 4D perspective: the ball of the objects' shadows as they are (and of the
+// view's ball at its own depth, which holds the markers' targets), within Frame::shadow_radius of
+// the shadow of the view's ball (which reaches nearer the eye than any object). Found again only
+// when the frame, the perspective or the view's ball change, so the view holds still under the hand.
+struct PerspectiveFit {
+  Mat<4> frame = Mat<4>::Zero();
+  double eye = 0;
+  ViewFit fit;
+  BoundingSphere shadow;
+
+  const BoundingSphere& of(const Scene& scene, const ViewFit& ball) {
+    const Frame<4>& f = scene.frame;
+    if (f.matrix() == frame && f.perspective() == eye && ball.centre == fit.centre && ball.radius == fit.radius)
+      return shadow;
+    frame = f.matrix();
+    eye = f.perspective();
+    fit = ball;
+    std::vector<Vec3> points;
+    for (const SceneObject& o : scene.objects)
+      for_each_point(o.shape, [&](const auto& p) {
+        if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) points.push_back(f.shadow(p));
+        else points.push_back(p);
+      });
+    const Vec4 q = f.to_view(ball.centre);
+    for (int i = 0; i < 3; ++i)
+      for (double s : {-1.0, 1.0}) points.push_back(f.project(q + s * ball.radius * Vec4::Unit(i)));
+    shadow = bounding_sphere(points);
+    shadow.radius = std::min(shadow.radius, f.shadow_radius(q, ball.radius));
+    return shadow;
+  }
+};
+
+// The view's ball in the shadow: a ball of R^4 is seen through the frame (orthographic, its shadow
+// is a ball of the same radius; in perspective, PerspectiveFit); objects of R^3 are drawn as they are.
+void frame_the_fit(GuiModel& model, PerspectiveFit& perspective) {
   Scene& scene = model.scene();
   bool in_r4 = false;
   for (const SceneObject& o : scene.objects) in_r4 = in_r4 || ambient_dim(o.shape) == 4;
-  scene.view.fit_centre = in_r4 ? Vec3(scene.frame.shadow(model.fit.centre)) : Vec3(model.fit.centre.head<3>());
-  scene.view.fit_centre += model.view.pan_offset(model.fit.radius);
-  scene.view.fit_radius = model.fit.radius;
+  if (in_r4 && scene.frame.is_perspective()) {
+    const BoundingSphere& b = perspective.of(scene, model.fit);
+    scene.view.fit_centre = b.centre;
+    scene.view.fit_radius = b.radius > 0 ? b.radius : model.fit.radius;
+  } else {
+    scene.view.fit_centre = in_r4 ? Vec3(scene.frame.shadow(model.fit.centre)) : Vec3(model.fit.centre.head<3>());
+    scene.view.fit_radius = model.fit.radius;
+  }
+  scene.view.fit_centre += model.view.pan_offset(scene.view.fit_radius);
 }
 
 // [SECTION] the loop
@@ -283,6 +323,7 @@ class GuiApp {
       f.view.angles = model_.view.plane_angles();
       f.view.trackball = model_.view.trackball();
       f.view.zoom = model_.view.zoom();
+      f.view.perspective = model_.view.perspective();
       f.tool = model_.active_tool()->name();
       f.tool_settings = tool_settings(model_);
     };
@@ -463,7 +504,7 @@ class GuiApp {
     }
     if (std::exchange(model_.want_frame, false)) frame_all(model_);
     model_.view.apply_to(model_.scene());
-    frame_the_fit(model_);
+    frame_the_fit(model_, perspective_fit_);
   }
 
   ToolInput tool_input() {
@@ -577,6 +618,7 @@ class GuiApp {
   DeviceMapping sent_mapping_;
   std::vector<std::string> shots_, dumps_;
   std::size_t objects_seen_ = 0;
+  PerspectiveFit perspective_fit_;  // the view's ball in the 4D perspective, kept while nothing turns
   float applied_scale_ = 0;
   std::string last_status_;
   int script_frame_ = 0, waited_ = 0;

@@ -21,7 +21,7 @@ constexpr double kDoneShare = 0.75;  // a step is done when its centre went this
 }  // namespace
 
 Vec3 HintMarkers::shadow_of(const GuiModel& model, const Vec4& world) {
-  return model.session.dimension() == 4 ? Vec3(model.session.scene().frame.to_view(world).head<3>())
+  return model.session.dimension() == 4 ? Vec3(model.session.scene().frame.shadow(world))
                                         : Vec3(world.head<3>());
 }
 

@@ -120,6 +120,7 @@ void Panels::open_session(GuiModel& model, const SessionFile& saved, const std::
   model.view.reset(model.scene());
   model.view.set_base_frame(saved.view.base_frame);
   model.view.set(saved.view.angles, saved.view.trackball, saved.view.zoom);
+  model.view.set_perspective(saved.view.perspective);  // checked when read
   model.fit = fit_of(model.scene());
   ToolChoice chosen = ToolChoice::kTouch;
   const ToolChoice was = model.tool;

@@ -68,6 +68,8 @@ struct GuiModel {
   bool show_history = false;   // Edit > History
   bool show_messages = false;  // View > Messages
   bool want_frame = false;     // F, View > Frame all: fit every object in the view
+  double perspective_distance = 0;  // the View panel's last 4D eye distance (0: none chosen yet)
+  std::vector<std::pair<std::string, Rect>> view_controls;  // the View panel's perspective controls drawn this frame
   bool touch_and_sound_only = false;  // the picture hidden: the knot explored by feel and ear (H)
   bool open_knot_table = false;  // Create > Knot from the table
   bool open_same_knot = false;   // Exercises > Are these the same knot?

@@ -4,7 +4,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "app/panel_settings.hpp"
 #include "interact/live/live_simulation.hpp"
@@ -42,10 +44,42 @@ void legend(ColourMap map, const Scene& scene) {
   if (in_r4 && in_r3) ImGui::TextDisabled("objects in R^3: by distance from the eye");
 }
 
+// The 4D perspective (as KnotPlot and Meshview offer it): the shadow seen from an eye at distance d
+// along w, nearer in w drawn larger. The distance is in scene units, offered from half the view's
+// ball to a hundred times it; the last one chosen comes back when it is turned on again.
+void perspective_controls(GuiModel& model) {
+  const double r = model.fit.radius > 0 && std::isfinite(model.fit.radius) ? model.fit.radius : 1.0;
+  const double hi = std::min(100 * r, Frame<4>::kMaxPerspective), lo = std::min(0.5 * r, 0.5 * hi);
+  bool on = model.view.perspective() > 0;
+  if (!(model.perspective_distance > 0)) model.perspective_distance = std::clamp(4 * r, lo, hi);
+  const auto drawn = [&](const char* name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    model.view_controls.emplace_back(name, Rect{a.x, a.y, b.x - a.x, b.y - a.y});
+  };
+  if (ImGui::Checkbox("4D perspective", &on)) model.view.set_perspective(on ? model.perspective_distance : 0);
+  drawn("4D perspective");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the shadow seen from a 4D eye at distance d along w: nearer in w is drawn larger\n"
+                      "(shadow4d render --perspective D)");
+  if (!on) return;
+  float d = static_cast<float>(model.perspective_distance);
+  if (ImGui::SliderFloat("eye distance", &d, static_cast<float>(lo), static_cast<float>(hi), "%.2f",
+                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+    if (const std::string e = Frame<4>::perspective_error(d); e.empty()) {
+      model.perspective_distance = d;
+      model.view.set_perspective(d);
+    } else {
+      model.error = e;  // what was typed is refused; the view keeps its distance
+    }
+  }
+  drawn("eye distance");
+}
+
 }  // namespace
 
 // [SECTION] View panel
 void Panels::view_panel(GuiModel& model, float fps) {
+  model.view_controls.clear();
   if (!model.dock.begin(Side::kLeft, "View", nullptr, false)) return;
   ImGui::Text("%.0f fps  (%.1f ms)", fps, fps > 0 ? 1000.0f / fps : 0.0f);
   ImGui::Separator();
@@ -71,6 +105,7 @@ void Panels::view_panel(GuiModel& model, float fps) {
   ImGui::SameLine();
   if (ImGui::Button("Reset view")) model.view.reset(model.scene());
   ImGui::TextDisabled("drag empty space: turn  shift-drag: xw/yw  ctrl-drag: zw  wheel: zoom");
+  perspective_controls(model);
 
   ImGui::Separator();
   ImGui::TextUnformatted("Drawing");

@@ -72,6 +72,8 @@ Frame<4> ViewState::composed_frame() const {
   const auto planes = all_planes(4);
   for (std::size_t i = 0; i < planes.size(); ++i)
     if (angles_[i] != 0.0f) f.rotate(planes[i], angles_[i] * M_PI / 180.0);
+  if (perspective_ > 0) f.set_perspective(perspective_);
+  else f.set_orthographic();
   return f;
 }
 

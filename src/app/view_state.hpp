@@ -44,7 +44,15 @@ class ViewState {
   std::array<float, 6>& plane_angles() { return angles_; }
   const std::array<float, 6>& plane_angles() const { return angles_; }
 
-  // Writes the composed 4D frame, trackball and zoom into the scene for drawing.
+  // The 4D perspective: the eye's distance along w, 0 for the orthographic shadow (the default).
+  // set_perspective throws Error for a bad distance (Frame::perspective_error) and changes nothing.
+  double perspective() const { return perspective_; }
+  void set_perspective(double d) {
+    if (d != 0) Frame<4>().set_perspective(d);  // the check, with its sentence
+    perspective_ = d;
+  }
+
+  // Writes the composed 4D frame (with the perspective), trackball and zoom into the scene for drawing.
   void apply_to(Scene& scene) const;
   Frame<4> composed_frame() const;
   // For undo: the trackball and the zoom as they are, and put back.
@@ -65,6 +73,7 @@ class ViewState {
   Eigen::Quaterniond trackball_ = Eigen::Quaterniond::Identity();
   double zoom_ = 1;
   Vec2 pan_ = Vec2::Zero();
+  double perspective_ = 0;
 };
 
 }  // namespace s4d

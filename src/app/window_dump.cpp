@@ -122,6 +122,10 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Rect& view)
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) frame.push_back(f.matrix()(r, k));
   j["frame"] = frame;
+  j["perspective"] = f.perspective();  // the 4D eye's distance along w; 0 orthographic
+  Json controls = Json::object();
+  for (const auto& [name, r] : model.view_controls) controls[name] = {r.x, r.y, r.right(), r.bottom()};
+  j["view_controls"] = controls;
   j["objects"] = model.scene().objects.size();
   if (model.intersections.computed) {
     Json pinch = Json::array();
@@ -176,6 +180,10 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
     panels.push_back(p);
   }
   j["panels"] = panels;
+  Json sections = Json::array();  // the columns' section headers: a click opens or closes one
+  for (const Dock::Header& h : model.dock.headers())
+    sections.push_back({{"name", h.name}, {"rect", {h.rect.x, h.rect.y, h.rect.right(), h.rect.bottom()}}, {"open", h.open}});
+  j["sections"] = sections;
   j["ui_scale"] = model.ui_scale;
   j["start_page"] = model.start_page;
   Json cards = Json::array();

@@ -1,9 +1,10 @@
-// The session's JSON: {"shadow4d_session": version, "scene": {...}, "simulation": {...},
-// "view": {...}, "tool", "tool_settings": {...}, "history": [...], "history_head",
-// "history_states": [...], "clean_exit", "closed_by", "saved_at"}.
+// The session's JSON: {"shadow4d_session": version, "clean_exit", "closed_by", "saved_at",
+// "scene": {...}, "simulation": {...}, "view": {...}, "tool", "tool_settings": {...},
+// "history": [...], "history_head", "history_states": [...]}.
 #include "io/session_file.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -143,6 +144,11 @@ void StateTextCache::keep_only(const std::vector<std::shared_ptr<const DocumentS
 std::string session_text(const SessionFile& s, StateTextCache* cache) {
   Json root;
   root["shadow4d_session"] = kSessionVersion;
+  // First, so that a start learns how the run ended from the file's opening bytes
+  // (read_session_summary) however long its history.
+  root["clean_exit"] = s.clean_exit;
+  if (!s.closed_by.empty()) root["closed_by"] = s.closed_by;
+  root["saved_at"] = s.saved_at;
   root["opened"] = s.opened;
   root["scene"] = Json::parse(scene_text(s.scene, "session.s4d", ObjectStorage::kInline));
   const SimulationState& sim = s.simulation;
@@ -154,13 +160,11 @@ std::string session_text(const SessionFile& s, StateTextCache* cache) {
     for (int k = 0; k < 4; ++k) base.push_back(s.view.base_frame.matrix()(r, k));
   root["view"] = {{"angles", s.view.angles}, {"base_frame", base},
                   {"trackball", quaternion_json(s.view.trackball)}, {"zoom", s.view.zoom}};
+  if (s.view.perspective > 0) root["view"]["perspective"] = s.view.perspective;  // orthographic files stay as they were
   root["tool"] = s.tool;
   root["tool_settings"] = settings_json(s.tool_settings);
   root["history"] = s.history;
   root["history_head"] = s.history_head;
-  root["clean_exit"] = s.clean_exit;
-  if (!s.closed_by.empty()) root["closed_by"] = s.closed_by;
-  root["saved_at"] = s.saved_at;
   try {
     // The states last, and without indentation: they are most of the file, and read by no person.
     std::string text = root.dump(1);
@@ -253,6 +257,11 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
     s.view.trackball = parse_quaternion(c, j.value("trackball", Json::array({1, 0, 0, 0})), "view.trackball");
     s.view.zoom = c.number(j.value("zoom", Json(1)), "view.zoom");
     if (!(s.view.zoom > 0)) c.fail("view.zoom", "must be positive");
+    if (j.contains("perspective")) {
+      s.view.perspective = c.number(j["perspective"], "view.perspective");
+      if (s.view.perspective != 0)  // 0: orthographic
+        if (const std::string e = Frame<4>::perspective_error(s.view.perspective); !e.empty()) c.fail("view.perspective", e);
+    }
   }
   if (root.contains("tool")) {
     if (!root["tool"].is_string()) c.fail("tool", "must be a string");
@@ -294,6 +303,104 @@ SessionFile parse_session(const std::string& text, const std::filesystem::path& 
 }
 
 SessionFile read_session(const std::filesystem::path& path) { return parse_session(read_text_file(path), path); }
+
+namespace {
+
+// Reads the top level's three fields as the parser passes them and builds nothing else.
+class SummarySax final : public nlohmann::json_sax<Json> {
+ public:
+  SessionSummary summary;
+  bool has_version = false;
+  bool complete = false;  // every field read: the parse stopped early
+  std::string error;
+
+  bool null() override { return value(); }
+  bool boolean(bool v) override {
+    if (depth_ == 1 && key_ == "clean_exit") {
+      summary.clean_exit = v;
+      has_clean_exit_ = true;
+    }
+    return value();
+  }
+  bool number_integer(number_integer_t v) override { return number(static_cast<double>(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return number(static_cast<double>(v)); }
+  bool number_float(number_float_t v, const string_t&) override { return number(v); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(); }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(); }
+  bool end_array() override { return close(); }
+  bool key(string_t& k) override {
+    if (depth_ == 1) key_ = k;
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    error = e.what();
+    return false;
+  }
+
+ private:
+  bool number(double v) {
+    if (depth_ == 1 && key_ == "shadow4d_session") {
+      summary.version = std::isfinite(v) && v == std::floor(v) ? static_cast<int>(v) : -1;
+      has_version = true;
+    }
+    if (depth_ == 1 && key_ == "saved_at" && std::isfinite(v)) {
+      summary.saved_at = v;
+      has_saved_at_ = true;
+    }
+    return value();
+  }
+  // Files since this reader write the three first: the parse stops there. Older ones (the three
+  // last) are scanned to the end.
+  bool value() {
+    complete = has_version && has_clean_exit_ && has_saved_at_;
+    return !complete;
+  }
+  bool open() {
+    ++depth_;
+    return true;
+  }
+  bool close() {
+    --depth_;
+    return true;
+  }
+  int depth_ = 0;
+  std::string key_;
+  bool has_clean_exit_ = false, has_saved_at_ = false;
+};
+
+}  // namespace
+
+SessionSummary parse_session_summary(const std::string& text, const std::filesystem::path& origin) {
+  const Ctx c{origin.string()};
+  SummarySax sax;
+  if (!Json::sax_parse(text, &sax) && !sax.complete)
+    throw ParseError(c.file, 0, "not a session (damaged or not JSON): " + sax.error);
+  if (!sax.has_version) c.fail("shadow4d_session", "missing: this is no session file");
+  if (sax.summary.version > kSessionVersion)
+    c.fail("shadow4d_session", "written by a newer shadow4d (version " + std::to_string(sax.summary.version) +
+                                   "); this one reads " + std::to_string(kSessionVersion));
+  if (sax.summary.version < 1) c.fail("shadow4d_session", "not a version number");
+  return sax.summary;
+}
+
+SessionSummary read_session_summary(const std::filesystem::path& path) {
+  // The opening bytes hold the three fields in files written since they come first; an older file
+  // (or one whose opening does not hold them) is read whole.
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot read " + path.string());
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  try {
+    return parse_session_summary(head, path);
+  } catch (const ParseError&) {
+    if (in.gcount() < 4096) throw;  // that was the whole file
+  }
+  return parse_session_summary(read_text_file(path), path);
+}
 
 void write_session(const SessionFile& session, const std::filesystem::path& path, int keep, StateTextCache* cache) {
   write_file_atomically(path, session_text(session, cache), keep);

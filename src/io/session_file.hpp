@@ -43,12 +43,13 @@ struct SimulationState {
 };
 
 // The window's view beyond the scene's own: the six 4D slider angles over the base frame, the
-// trackball and the zoom.
+// trackball, the zoom and the 4D perspective.
 struct SessionView {
   std::array<float, 6> angles{};  // degrees, xy xz xw yz yw zw
   Frame<4> base_frame;
   Eigen::Quaterniond trackball = Eigen::Quaterniond::Identity();
   double zoom = 1;
+  double perspective = 0;  // the 4D eye's distance along w (Frame::set_perspective); 0 orthographic
 };
 
 struct SessionFile {
@@ -91,6 +92,18 @@ std::string session_text(const SessionFile& session, StateTextCache* cache = nul
 // refused by name ("written by a newer shadow4d (version 3); this one reads 1").
 SessionFile parse_session(const std::string& text, const std::filesystem::path& origin);
 SessionFile read_session(const std::filesystem::path& path);
+
+// What a start needs to know of an autosave slot without building its whole document (a long
+// history is megabytes of states): its version, whether its run quit normally, when it was saved.
+struct SessionSummary {
+  int version = 0;
+  bool clean_exit = true;
+  double saved_at = 0;
+};
+// Throws ParseError for a file that is not JSON or not a session, as read_session does; the rest
+// of the file is checked only when it is read.
+SessionSummary parse_session_summary(const std::string& text, const std::filesystem::path& origin);
+SessionSummary read_session_summary(const std::filesystem::path& path);
 // Atomic (io/atomic_file.hpp); `keep` older versions are kept beside it.
 void write_session(const SessionFile& session, const std::filesystem::path& path, int keep = 0,
                    StateTextCache* cache = nullptr);

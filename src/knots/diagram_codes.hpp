@@ -19,8 +19,6 @@ KnotDiagram diagram_from_pd(const std::string& code);
 // for composite knots, always which knot): Regina's reading (as SnapPea's) picks one. Throws
 // s4d::Error.
 KnotDiagram diagram_from_dt(const std::string& code);
-// Regina's knot signature (the knot index's `sig` column). Throws s4d::Error.
-KnotDiagram diagram_from_knot_sig(const std::string& sig);
 
 // The codes out, in the forms the readers above take: "[[1,5,2,4],[3,1,4,6],[5,3,6,2]]" (edges
 // numbered along the components in order), and the numerical DT code "4 6 2" (knots only; throws

@@ -174,12 +174,12 @@ Laurent2 unlink_homfly(int m) {
   return r;
 }
 
-void identify_knot_invariants(KnotIdentification& id, const KnotIndex& index, bool prove_unknot) {
+void identify_knot_invariants(KnotIdentification& id, const KnotIndex& index, bool prove_unknot, KnotEngine engine) {
   const KnotInvariants& inv = id.invariants;
   const int c = inv.simplified_crossings;
   if (is_one(inv.homfly)) {
     id.kind = KnotKind::kUnknot;
-    id.proven = c == 0 || is_unknot(id.diagram, prove_unknot);
+    id.proven = c == 0 || is_unknot(id.diagram, prove_unknot, engine);
     id.name = id.proven ? "unknot" : "unknot? (trivial HOMFLY-PT, not proven)";
     return;
   }
@@ -457,9 +457,9 @@ KnotIdentification identify_diagram(const KnotDiagram& diagram, const IdentifyOp
   KnotIdentification id;
   id.diagram = diagram;
   id.frame = options.frame;
-  id.invariants = compute_invariants(diagram);
+  id.invariants = compute_invariants(diagram, options.engine);
   if (diagram.component_count() == 1) {
-    identify_knot_invariants(id, index, options.prove_unknot);
+    identify_knot_invariants(id, index, options.prove_unknot, options.engine);
     return id;
   }
   id.kind = KnotKind::kLink;

@@ -64,6 +64,7 @@ struct IdentifyOptions {
   Frame<3> frame;             // the view to start from
   bool choose_view = true;    // also try the curve's principal axes; keep the view with fewest crossings
   bool prove_unknot = false;  // use Regina's solid-torus recognition when only invariants say unknot
+  KnotEngine engine = default_knot_engine();  // who computes the invariants
   const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
   const LinkTable* links = nullptr;  // nullptr: LinkTable::shipped()
 };

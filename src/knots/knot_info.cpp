@@ -36,6 +36,7 @@ KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view, c
   info.decided_by = std::move(named.decided_by);
   info.further_used = std::move(named.further_used);
   info.skipped = std::move(named.skipped);
+  info.unavailable = std::move(named.unavailable);
   info.identification = std::move(named.identification);
   info.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return info;

@@ -45,6 +45,7 @@ struct KnotInfo {
   std::vector<std::string> decided_by;    // the invariants and proofs that decided it, in order
   std::vector<std::string> further_used;  // the further invariants tried (decisive or not)
   std::vector<std::string> skipped;       // fast: the further invariants left out
+  std::vector<std::string> unavailable;   // further invariants due that the engine lacks (no Regina)
   KnotIdentification identification;      // everything, for callers that want more
   double milliseconds = 0;                // time taken
 };

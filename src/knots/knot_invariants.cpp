@@ -1,120 +1,50 @@
-// The bridge to Regina: our KnotDiagram becomes a regina::Link; Regina simplifies it and computes
-// the polynomials, which come back as our own Laurent types.
+// The engine choice, the own engine's invariants and the texts both engines share.
 #include "knots/knot_invariants.hpp"
 
-#include <triangulation/dim3.h>
-
 #include "core/error.hpp"
-#include "knots/regina_link.hpp"
+#include "knots/diagram_moves.hpp"
+#include "knots/own_codes.hpp"
+#include "knots/own_polynomials.hpp"
+#include "knots/regina_engine.hpp"
 
 namespace s4d {
 
-regina::Link to_regina_link(const KnotDiagram& d) {
-  std::vector<int> signs;
-  signs.reserve(d.crossings.size());
-  for (const auto& c : d.crossings) signs.push_back(c.sign);
-  std::vector<std::vector<int>> comps;
-  for (const auto& comp : d.components) {
-    std::vector<int> visits;
-    for (int p : comp) {
-      const int label = d.passages[p].crossing + 1;
-      visits.push_back(d.passages[p].over ? label : -label);
-    }
-    if (visits.empty()) visits.push_back(0);  // Regina's spelling of a crossing-free component
-    comps.push_back(std::move(visits));
+bool regina_available() { return S4D_WITH_REGINA != 0; }
+
+KnotEngine default_knot_engine() { return regina_available() ? KnotEngine::kRegina : KnotEngine::kOwn; }
+
+const char* engine_name(KnotEngine e) { return e == KnotEngine::kRegina ? "Regina" : "own"; }
+
+KnotEngine parse_knot_engine(const std::string& text) {
+  if (text == "own") return KnotEngine::kOwn;
+  if (text == "regina" || text == "Regina") {
+    if (!regina_available()) throw Error("this build has no Regina (built with S4D_WITH_REGINA=OFF); use --engine own");
+    return KnotEngine::kRegina;
   }
-  try {
-    return regina::Link::fromData(signs.begin(), signs.end(), comps.begin(), comps.end());
-  } catch (const std::exception& e) {
-    throw Error(std::string("inconsistent knot diagram: ") + e.what());
-  }
+  throw Error("unknown knot engine '" + text + "': use 'regina' or 'own'");
 }
 
-KnotDiagram diagram_from_regina(const regina::Link& link) {
-  KnotDiagram d;
-  d.crossings.resize(link.size());
-  for (std::size_t i = 0; i < link.size(); ++i) d.crossings[i].sign = link.crossing(i)->sign();
-  for (std::size_t c = 0; c < link.countComponents(); ++c) {
-    std::vector<int> comp;
-    const regina::StrandRef start = link.component(c);
-    if (start.crossing()) {
-      regina::StrandRef s = start;
-      do {
-        const int p = static_cast<int>(d.passages.size());
-        const int k = static_cast<int>(s.crossing()->index());
-        const bool over = s.strand() == 1;
-        d.passages.push_back({k, over, static_cast<int>(c), 0.0});
-        (over ? d.crossings[k].over : d.crossings[k].under) = p;
-        comp.push_back(p);
-        ++s;
-      } while (s != start);
-    }
-    d.components.push_back(std::move(comp));
-  }
-  d.normalise();
-  return d;
-}
+std::string KnotInvariants::jones_text() const { return jones.str_half("t"); }
+std::string KnotInvariants::alexander_text() const { return alexander.str_half("t"); }
+std::string KnotInvariants::homfly_text() const { return homfly.str("a", "z"); }
 
 namespace {
 
-Laurent1 from_regina(const regina::Laurent<regina::Integer>& p) {
-  Laurent1 r;
-  if (p.isZero()) return r;
-  for (long e = p.minExp(); e <= p.maxExp(); ++e) r.add(e, p[e].longValue());
-  return r;
-}
-
-// Laurent2 keeps its terms private; every exponent of a HOMFLY-PT polynomial of an n-crossing,
-// m-component diagram lies within [-(n + m), n + m], so probing that box is exact.
-Laurent2 from_regina(const regina::Laurent2<regina::Integer>& p, long bound) {
-  Laurent2 r;
-  for (long i = -bound; i <= bound; ++i)
-    for (long j = -bound; j <= bound; ++j) {
-      const auto& c = p(i, j);
-      if (!c.isZero()) r.add(i, j, c.longValue());
-    }
-  return r;
-}
-
-std::string in_t_or_sqrt_t(const Laurent1& f) { return f.str_half("t"); }
-
-// Connected pieces of a diagram's shadow: components joined where they cross.
-int diagram_pieces(const KnotDiagram& d) {
-  std::vector<int> parent(d.components.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
-  auto root = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  for (const auto& c : d.crossings) parent[root(d.passages[c.over].component)] = root(d.passages[c.under].component);
-  int pieces = 0;
-  for (std::size_t i = 0; i < parent.size(); ++i) pieces += root(static_cast<int>(i)) == static_cast<int>(i);
-  return pieces;
-}
-
-}  // namespace
-
-std::string KnotInvariants::jones_text() const { return in_t_or_sqrt_t(jones); }
-std::string KnotInvariants::alexander_text() const { return in_t_or_sqrt_t(alexander); }
-std::string KnotInvariants::homfly_text() const { return homfly.str("a", "z"); }
-
-KnotInvariants compute_invariants(const KnotDiagram& diagram) {
+KnotInvariants own_invariants(const KnotDiagram& diagram) {
   KnotInvariants inv;
+  inv.engine = KnotEngine::kOwn;
   inv.components = diagram.component_count();
   inv.diagram_crossings = diagram.crossing_count();
   inv.writhe = diagram.writhe();
   inv.linking = diagram.linking_numbers();
-
-  regina::Link link = to_regina_link(diagram);
-  link.intelligentSimplify();
-  inv.simplified_crossings = static_cast<int>(link.size());
-  inv.simplified_alternating = link.isAlternating();
-  if (link.size() > 0) inv.simplified_pd = link.pd();
-  inv.simplified_pieces = diagram_pieces(diagram_from_regina(link));
-
-  const long bound = static_cast<long>(link.size() + link.countComponents()) + 1;
-  inv.homfly = from_regina(link.homflyAZ(), bound);
-  inv.jones = from_regina(link.jones());
+  const GaussDiagram simple = simplify_gauss(GaussDiagram::of(diagram));
+  const KnotDiagram s = simple.diagram();
+  inv.simplified_crossings = s.crossing_count();
+  inv.simplified_alternating = is_alternating(s);
+  if (s.crossing_count() > 0) inv.simplified_pd = s.pd_code();
+  inv.simplified_pieces = diagram_pieces(s);
+  inv.homfly = homfly_polynomial(simple);
+  inv.jones = jones_from_homfly(inv.homfly, inv.components);
   inv.alexander = alexander_from_homfly(inv.homfly);
   inv.determinant = abs_at_t_minus_one(inv.jones);
   inv.fingerprint = homfly_fingerprint(inv.homfly);
@@ -122,33 +52,38 @@ KnotInvariants compute_invariants(const KnotDiagram& diagram) {
   return inv;
 }
 
-ReginaCodes regina_codes(const KnotDiagram& diagram) {
-  const regina::Link link = to_regina_link(diagram);
+}  // namespace
+
+KnotInvariants compute_invariants(const KnotDiagram& diagram, KnotEngine engine) {
+#if S4D_WITH_REGINA
+  if (engine == KnotEngine::kRegina) return regina_invariants(diagram);
+#else
+  if (engine == KnotEngine::kRegina) throw Error("this build has no Regina (S4D_WITH_REGINA=OFF)");
+#endif
+  return own_invariants(diagram);
+}
+
+ReginaCodes regina_codes(const KnotDiagram& diagram, KnotEngine engine) {
+#if S4D_WITH_REGINA
+  if (engine == KnotEngine::kRegina) return regina_code_texts(diagram);
+#endif
+  (void)engine;
   ReginaCodes c;
-  c.oriented_gauss = link.orientedGauss();
-  if (link.countComponents() == 1) {
-    c.gauss = link.gauss();
-    // Regina writes DT codes for knots with at least one crossing (alphabetical: <= 26).
-    if (link.size() > 0) {
-      try {
-        c.dt = link.dt(false);
-        c.dt_alpha = link.dt(true);
-      } catch (const std::exception&) {
-        c.dt_alpha.clear();
-      }
-    }
-  }
+  c.oriented_gauss = oriented_gauss_text(diagram);
+  c.gauss = gauss_text(diagram);
+  c.dt = dt_text(diagram, false);
+  c.dt_alpha = dt_text(diagram, true);
   return c;
 }
 
-bool is_unknot(const KnotDiagram& diagram, bool use_topology) {
+bool is_unknot(const KnotDiagram& diagram, bool use_topology, KnotEngine engine) {
+#if S4D_WITH_REGINA
+  if (engine == KnotEngine::kRegina) return regina_is_unknot(diagram, use_topology);
+#endif
+  (void)engine;
+  (void)use_topology;  // the own engine has no unknot recognition beyond simplification
   if (diagram.component_count() != 1) return false;
-  regina::Link link = to_regina_link(diagram);
-  link.intelligentSimplify();
-  if (link.size() == 0) return true;
-  if (!use_topology) return false;
-  // The complement of a knot is a solid torus exactly when the knot is trivial.
-  return link.complement().isSolidTorus();
+  return simplify_gauss(GaussDiagram::of(diagram)).crossings() == 0;
 }
 
 }  // namespace s4d

@@ -61,7 +61,8 @@ const LinkTable& links_of(const NamingOptions& o) { return o.links ? *o.links : 
 std::vector<std::string> grounds(const KnotIdentification& id, const KnotIndex& index, const NamingOptions& o) {
   const KnotInvariants& v = id.invariants;
   if (id.kind == KnotKind::kUnknot && id.proven && v.simplified_crossings == 0)
-    return {"Reidemeister simplification to a diagram without crossings (Regina)"};
+    return {std::string("Reidemeister simplification to a diagram without crossings (") + engine_name(v.engine) +
+            (v.engine == KnotEngine::kOwn ? " engine" : "") + ")"};
   if (id.kind == KnotKind::kUnknot && id.proven) return {"the complement is a solid torus (Regina's unknot recognition)"};
   std::vector<std::string> out;
   if ((id.kind == KnotKind::kPrime || id.kind == KnotKind::kComposite) && id.candidates.size() == 1) {
@@ -121,6 +122,10 @@ void refine_link(Context& c) {
                                    [](const LinkCandidate& l) { return l.entry != nullptr; });
   if (table < 2 || n < 2) return;
   const std::string covers = covers_text("link", n);
+  if (!c.engine.has_covers()) {
+    c.out.unavailable.push_back(covers);
+    return;
+  }
   const std::string mine = c.engine.cover_signature(id.diagram, n);
   c.out.further_used.push_back(covers + ", with their homology (" + c.engine.engine() + ")");
   std::vector<LinkCandidate> kept;
@@ -141,6 +146,10 @@ void refine_link(Context& c) {
 
 void prove_unknot(Context& c) {
   KnotIdentification& id = c.out.identification;
+  if (!c.engine.has_unknot_recognition()) {
+    c.out.unavailable.push_back("unknot recognition");
+    return;
+  }
   c.out.further_used.push_back("unknot recognition of the complement (" + c.engine.engine() +
                                ": is it a solid torus?)");
   id.proven = true;
@@ -162,6 +171,10 @@ void drop_by_covers(Context& c) {
   const int n = c.options.knot_cover_index;
   if (n < 2) return;
   const std::string covers = covers_text("knot", n);
+  if (!c.engine.has_covers()) {
+    c.out.unavailable.push_back(covers);
+    return;
+  }
   const std::string mine = c.engine.cover_signature(id.diagram, n);
   c.out.further_used.push_back(covers + ", with their homology (" + c.engine.engine() + ")");
   std::vector<KnotFactorisation> kept;
@@ -188,8 +201,7 @@ void search_table_diagrams(Context& c) {
       targets.push_back(c.engine.table_diagram(id.candidates[i][0]));
       which.push_back(i);
     }
-  c.out.further_used.push_back("a Reidemeister search (" + c.engine.engine() + "'s rewrite, up to " +
-                               std::to_string(extra) + " extra crossing(s)) towards the candidates' table diagrams");
+  c.out.further_used.push_back(c.engine.search_text(extra) + " towards the candidates' table diagrams");
   if (const auto hit = c.engine.reidemeister_search(id.diagram, targets, extra)) {
     const KnotFactorisation found = id.candidates[which[*hit]];
     c.out.decided_by.push_back("Reidemeister moves turn the diagram into the table's diagram of " +
@@ -256,6 +268,11 @@ std::string KnotNaming::chirality() const {
 
 std::string KnotNaming::headline() const {
   std::string s = identification.headline();
+  if (!unavailable.empty()) {
+    std::string what;
+    for (const auto& x : unavailable) what += (what.empty() ? "" : ", ") + x;
+    s += "  [without Regina: " + what + " unavailable]";
+  }
   if (skipped.empty()) return s;
   std::string what;
   for (const auto& x : skipped) what += (what.empty() ? "" : ", ") + x;
@@ -274,7 +291,7 @@ KnotNaming decide(KnotIdentification id, const NamingOptions& options, const Kno
     out.skipped = due;
     return out;
   }
-  Context c{options, index, options.refinements ? *options.refinements : regina_refinements(), out};
+  Context c{options, index, options.refinements ? *options.refinements : refinements_of(options.engine), out};
   if (out.identification.kind == KnotKind::kLink) refine_link(c);
   else refine_knot(c);
   return out;
@@ -286,6 +303,7 @@ IdentifyOptions identify_options(const NamingOptions& options, const KnotIndex& 
   o.frame = options.frame;
   o.index = &index;
   o.links = options.links;
+  o.engine = options.engine;
   return o;
 }
 

@@ -31,8 +31,21 @@ class KnotRefinements {
                                                          int extra) const = 0;
   // Whether the knot's complement is a solid torus (exactly when it is the unknot).
   virtual bool complement_is_solid_torus(const KnotDiagram& diagram) const = 0;
+  // What the engine can do: an engine without them says so, and the name stays "not proven".
+  virtual bool has_covers() const { return true; }
+  // How the naming names its Reidemeister search.
+  virtual std::string search_text(int extra) const {
+    return "a Reidemeister search (" + engine() + "'s rewrite, up to " + std::to_string(extra) + " extra crossing(s))";
+  }
+  virtual bool has_unknot_recognition() const { return true; }
 };
+// Regina's (only in a build with Regina: S4D_WITH_REGINA).
 const KnotRefinements& regina_refinements();
+// The own engine's: table diagrams from the index's knot signatures, a Reidemeister search by R3
+// moves and R1/R2 removal; no covers, no unknot recognition.
+const KnotRefinements& own_refinements();
+// The refinements that go with an engine.
+const KnotRefinements& refinements_of(KnotEngine engine);
 
 struct NamingOptions {
   Frame<3> frame;          // the view to start from; the curve's principal axes are tried too
@@ -42,7 +55,8 @@ struct NamingOptions {
   int rewrite_height = 1;    // Reidemeister search: extra crossings allowed (0: none)
   const KnotIndex* index = nullptr;  // nullptr: KnotIndex::shipped()
   const LinkTable* links = nullptr;  // nullptr: LinkTable::shipped()
-  const KnotRefinements* refinements = nullptr;  // nullptr: regina_refinements()
+  KnotEngine engine = default_knot_engine();     // who computes the invariants
+  const KnotRefinements* refinements = nullptr;  // nullptr: refinements_of(engine)
 };
 
 struct KnotNaming {
@@ -50,14 +64,15 @@ struct KnotNaming {
   std::vector<std::string> decided_by;    // the invariants and proofs that decided it, in order
   std::vector<std::string> further_used;  // the refinements tried (decisive or not)
   std::vector<std::string> skipped;       // fast: the refinements that would have run
+  std::vector<std::string> unavailable;   // refinements due that the engine cannot do (no Regina)
   const std::string& name() const { return identification.name; }
   bool proven() const { return identification.proven; }
   // Every answer still possible, as text ("unknot", "3_1 # 4_1 mirror", "L6a4").
   std::vector<std::string> candidates() const;
   // One sentence: which of the knot and its mirror image this is ("" when not decided).
   std::string chirality() const;
-  // "3_1 (DT 3a_1)", with "  [not proven]" when other answers remain and "  [fast: ... skipped]"
-  // when the fast mode left refinements out.
+  // "3_1 (DT 3a_1)", with "  [not proven]" when other answers remain, "  [fast: ... skipped]"
+  // when the fast mode left refinements out and "  [without Regina: ...]" when the engine lacks them.
   std::string headline() const;
 };
 

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "knots/braid_closure.hpp"
 #include "knots/diagram_codes.hpp"
+#include "knots/own_codes.hpp"
 #include "knots/relax.hpp"
 #include "knots/resample.hpp"
 #include "shape/knot_curves.hpp"

@@ -101,8 +101,8 @@ ShadowCrossingResult<D> shadow_crossings(const Curve<D>& curve, const Frame<D>& 
     x.ta = s;
     x.tb = t;
     x.point = point;
-    x.depth_a = (1 - s) * z0[i] + s * z1[i];
-    x.depth_b = (1 - t) * z0[j] + t * z1[j];
+    x.depth_a = frame.depth_at(std::array<double, 2>{1 - s, s}, std::array<double, 2>{z0[i], z1[i]});
+    x.depth_b = frame.depth_at(std::array<double, 2>{1 - t, t}, std::array<double, 2>{z0[j], z1[j]});
     result.crossings.push_back(x);
   });
   std::sort(result.crossings.begin(), result.crossings.end(),

@@ -21,6 +21,7 @@ struct ShadowMesh {
   std::vector<double> w;    // nv, 4D depth
   const std::vector<Triangle>* tris = nullptr;
   std::vector<Box<3>> boxes;
+  Frame<4> frame;           // reads the depth at a point of a shadow triangle (perspective-correct)
 };
 
 ShadowMesh project(const Surface<4>& s, const Frame<4>& f) {
@@ -32,6 +33,7 @@ ShadowMesh project(const Surface<4>& s, const Frame<4>& f) {
     m.w.push_back(f.depth(v));
   }
   m.tris = &s.triangles;
+  m.frame = f;
   m.boxes.reserve(s.triangles.size());
   for (const auto& t : s.triangles) {
     Box<3> b;
@@ -112,10 +114,6 @@ bool coplanar_overlap(const std::array<Vec3, 3>& a, const std::array<Vec3, 3>& b
   return true;
 }
 
-double depth_at(const std::array<double, 3>& bary, const std::array<double, 3>& w) {
-  return bary[0] * w[0] + bary[1] * w[1] + bary[2] * w[2];
-}
-
 std::array<double, 3> lerp(const std::array<double, 3>& a, const std::array<double, 3>& b,
                            double t) {
   return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
@@ -163,10 +161,10 @@ void intersect_pair(const ShadowMesh& ma, int ia, const ShadowMesh& mb, int ib,
     const std::array<double, 3> bb = lerp(cb.bary[0], cb.bary[1], ub);
     const Vec3 p = ca.e[0] + ua * (ca.e[1] - ca.e[0]);
     (k == 0 ? seg.p0 : seg.p1) = p;
-    (k == 0 ? seg.depth_a0 : seg.depth_a1) = depth_at(ba, wa);
-    (k == 0 ? seg.depth_b0 : seg.depth_b1) = depth_at(bb, wb);
+    (k == 0 ? seg.depth_a0 : seg.depth_a1) = ma.frame.depth_at(ba, wa);
+    (k == 0 ? seg.depth_b0 : seg.depth_b1) = mb.frame.depth_at(bb, wb);
   }
-  // The depth difference is linear along the segment; a sign change is a true 4D meeting.
+  // The depth difference is linear along the segment (nearly, in perspective); a sign change is a true 4D meeting.
   const double f0 = seg.depth_a0 - seg.depth_b0, f1 = seg.depth_a1 - seg.depth_b1;
   if ((f0 <= 0 && f1 >= 0) || (f0 >= 0 && f1 <= 0)) {
     seg.true_intersection = true;

@@ -16,7 +16,7 @@ ProjectedSurface project_surface(const Surface<4>& s, const Frame<4>& frame) {
   out.depth.reserve(s.vertices.size());
   for (const Vec4& p : s.vertices) {
     const Vec4 q = frame.to_view(p);
-    out.positions.push_back(q.head<3>());
+    out.positions.push_back(frame.project(q));
     out.depth.push_back(q[3]);
   }
   return out;

@@ -74,7 +74,7 @@ Built build_object(const Shape& shape, const Frame<4>& frame, double radius, boo
             for (const auto& q : poly.points) {
               if constexpr (T::kDim == 4) {
                 const Vec4 v = frame.to_view(q);
-                pts.push_back(v.template head<3>());
+                pts.push_back(frame.project(v));
                 w.push_back(v[3]);
               } else {
                 pts.push_back(q);

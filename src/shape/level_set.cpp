@@ -88,10 +88,10 @@ LevelSet<D> level_set(const Surface<D>& mesh, const Frame<D>& frame, double leve
     if (above(a)) std::swap(a, b);  // a below, b at or above
     const double fa = view[a][D - 1], fb = view[b][D - 1];
     if (fb == level) {
-      point[n] = view[b].template head<D - 1>();
+      point[n] = frame.project(view[b]);
     } else {
       const double t = (level - fa) / (fb - fa);
-      point[n] = (view[a] + t * (view[b] - view[a])).template head<D - 1>();
+      point[n] = frame.project(view[a] + t * (view[b] - view[a]));
     }
   }
 
@@ -176,11 +176,7 @@ Curve<D> lift_slice(const Curve<D - 1>& slice, const Frame<D>& frame, double lev
   for (const Polyline<D - 1>& line : slice.components) {
     Polyline<D> lifted;
     lifted.closed = line.closed;
-    for (const Vec<D - 1>& p : line.points) {
-      Vec<D> q;
-      q << p, level;
-      lifted.points.push_back(frame.to_world(q));
-    }
+    for (const Vec<D - 1>& p : line.points) lifted.points.push_back(frame.to_world(frame.lift(p, level)));
     out.components.push_back(std::move(lifted));
   }
   return out;

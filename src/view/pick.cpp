@@ -46,7 +46,7 @@ std::vector<SheetHit> pick_sheets(const Scene& scene, const Vec3& origin, const 
         for (std::size_t i = 0; i < p.size(); ++i) {
           if constexpr (D == 4) {
             const Vec4 q = scene.frame.to_view(s.vertices[i]);
-            p[i] = q.head<3>();
+            p[i] = scene.frame.project(q);
             w[i] = q[3];
           } else {
             p[i] = s.vertices[i];
@@ -65,8 +65,8 @@ std::vector<SheetHit> pick_sheets(const Scene& scene, const Vec3& origin, const 
           hit.triangle = static_cast<int>(t);
           hit.point = origin + h * dir;
           hit.distance = h;
-          const double b[3] = {1 - u - v, u, v};
-          hit.w = b[0] * w[tri[0]] + b[1] * w[tri[1]] + b[2] * w[tri[2]];
+          hit.w = scene.frame.depth_at(std::array<double, 3>{1 - u - v, u, v},
+                                       std::array<double, 3>{w[tri[0]], w[tri[1]], w[tri[2]]});
           // The corner nearest the hit in the shadow; of two as near, the lower index.
           hit.vertex = tri[0];
           for (int k = 1; k < 3; ++k) {

@@ -19,7 +19,7 @@ std::vector<Polyline<3>> drawn_curve(const Shape& shape, const Frame<4>& frame,
       if (w) w->emplace_back();
       for (const Vec4& q : poly.points) {
         const Vec4 v = frame.to_view(q);
-        p.points.push_back(v.head<3>());
+        p.points.push_back(frame.project(v));
         if (w) w->back().push_back(v[3]);
       }
       drawn.push_back(std::move(p));

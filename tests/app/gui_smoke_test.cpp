@@ -1358,3 +1358,122 @@ TEST(GuiSmoke, TheSlicePanelNamesTheSpunTrefoilsMiddleSlice) {
 
 }  // namespace
 }  // namespace s4d
+
+namespace s4d {
+namespace {
+
+// The pixel of vertex v in a dump (nullopt when it is not on the screen).
+std::optional<Vec2> pixel_of(const nlohmann::json& d, int v) {
+  const auto& p = d["vertex_pixels"][static_cast<std::size_t>(v)];
+  if (p.is_null()) return std::nullopt;
+  return Vec2(p[0].get<double>(), p[1].get<double>());
+}
+
+// The middle of a rect [x0, y0, x1, y1] of a dump, as "move X Y".
+std::string move_to_middle(const nlohmann::json& r) {
+  return "move " + std::to_string(static_cast<int>((r[0].get<double>() + r[2].get<double>()) / 2)) + " " +
+         std::to_string(static_cast<int>((r[1].get<double>() + r[3].get<double>()) / 2));
+}
+
+// Issue 37, the 4D perspective: a person opens the View section, ticks "4D perspective" and types
+// an eye distance into its slider (Ctrl+click), all found by their names in the dump; the torus is
+// redrawn larger where it is nearer in w, a press where a vertex is drawn holds the vertex drawn
+// under the cursor, and the drag moves its picture with the hand.
+TEST(GuiSmoke, FourDPerspectiveFromTheViewPanelGrabsTheVertexUnderTheCursor) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no display; ctest runs this under xvfb-run";
+  const auto dir = std::filesystem::temp_directory_path() / "s4d_gui_perspective";
+  std::filesystem::remove_all(dir);
+  const std::string scenario = std::string(S4D_SOURCE_DIR) + "/scenarios/clifford-torus-pinch.json";
+  // What a person sees first: the View section, folded.
+  run_window(scenario, {at(8, "dump " + (dir / "look" / "state.json").string()), at(9, "quit")}, dir / "look");
+  const auto look = checked_dump(dir / "look" / "state.json");
+  EXPECT_DOUBLE_EQ(look["perspective"].get<double>(), 0) << "orthographic by default";
+  const auto section = std::find_if(look["sections"].begin(), look["sections"].end(),
+                                    [](const nlohmann::json& s) { return s["name"] == "View"; });
+  ASSERT_NE(section, look["sections"].end()) << look["sections"];
+  std::vector<std::string> open_view{at(2, "key SPACE"), at(3, move_to_middle((*section)["rect"])), at(5, "press left"),
+                                     at(6, "release left")};
+  auto opened_lines = open_view;
+  opened_lines.push_back(at(12, "dump " + (dir / "opened" / "state.json").string()));
+  opened_lines.push_back(at(13, "quit"));
+  run_window(scenario, opened_lines, dir / "opened");
+  const auto opened = checked_dump(dir / "opened" / "state.json");
+  ASSERT_TRUE(opened["view_controls"].contains("4D perspective")) << opened["view_controls"];
+  EXPECT_FALSE(opened["view_controls"].contains("eye distance")) << "shown once perspective is on";
+
+  // Tick it, then type 3 into the eye distance's slider.
+  auto persp_lines = open_view;
+  for (const std::string& l : {at(14, move_to_middle(opened["view_controls"]["4D perspective"])), at(16, "press left"),
+                               at(17, "release left"), at(20, "dump " + (dir / "ticked" / "state.json").string()),
+                               at(21, "quit")})
+    persp_lines.push_back(l);
+  run_window(scenario, persp_lines, dir / "ticked");
+  const auto ticked = checked_dump(dir / "ticked" / "state.json");
+  EXPECT_GT(ticked["perspective"].get<double>(), 0) << "ticked on";
+  ASSERT_TRUE(ticked["view_controls"].contains("eye distance")) << ticked["view_controls"];
+  persp_lines.resize(persp_lines.size() - 2);  // not its dump and quit
+  for (const std::string& l : {at(24, move_to_middle(ticked["view_controls"]["eye distance"])), at(26, "key-down LEFT_CONTROL"),
+                               at(27, "press left"), at(28, "release left"), at(29, "key-up LEFT_CONTROL"), at(31, "type 3"),
+                               at(33, "key ENTER"), at(40, "dump " + (dir / "set" / "state.json").string()),
+                               at(41, "shot " + (dir / "set" / "shot.png").string())})
+    persp_lines.push_back(l);
+  auto set_lines = persp_lines;
+  set_lines.push_back(at(42, "quit"));
+  run_window(scenario, set_lines, dir / "set");
+  const auto set = checked_dump(dir / "set" / "state.json");
+  ASSERT_DOUBLE_EQ(set["perspective"].get<double>(), 3.0) << set["status"];
+  // The picture changed: the rim nearer in w spreads out, the farther one shrinks.
+  const int n = 24;
+  double moved = 0;
+  for (int v = 0; v < n * n; ++v) {
+    const auto a = pixel_of(look, v), b = pixel_of(set, v);
+    if (a && b) moved = std::max(moved, (*a - *b).norm());
+  }
+  EXPECT_GT(moved, 10) << "pixels: the perspective redraws the torus";
+
+  // Press where vertex u = 3, v = 0 is drawn (nudged into its triangles), drag, hold still.
+  const auto px = pixel_of(set, 3 * n);
+  ASSERT_TRUE(px);
+  const Vec2 press = *px + Vec2(2, 1);
+  auto grab_lines = persp_lines;
+  grab_lines.push_back(at(44, "move " + std::to_string(press.x()) + " " + std::to_string(press.y())));
+  grab_lines.push_back(at(46, "move-by 1 0"));
+  grab_lines.push_back(at(47, "move-by -1 0"));
+  grab_lines.push_back(at(49, "press left"));
+  grab_lines.push_back(at(51, "dump " + (dir / "grab" / "pressed.json").string()));
+  for (int i = 1; i <= 10; ++i) grab_lines.push_back(at(52 + i, "move-by 3 -2"));
+  grab_lines.push_back(at(64, "wait-sim 1.0"));
+  grab_lines.push_back(at(66, "dump " + (dir / "grab" / "held.json").string()));
+  grab_lines.push_back(at(67, "shot " + (dir / "grab" / "held.png").string()));
+  grab_lines.push_back(at(68, "release left"));
+  grab_lines.push_back(at(70, "quit"));
+  run_window(scenario, grab_lines, dir / "grab");
+  const auto pressed = checked_dump(dir / "grab" / "pressed.json");
+  const auto held = checked_dump(dir / "grab" / "held.json");
+  EXPECT_DOUBLE_EQ(held["perspective"].get<double>(), 3.0);
+  const int v = pressed["held_vertex"].get<int>();
+  ASSERT_GE(v, 0) << "the press took hold of the torus";
+  EXPECT_EQ(held["held_vertex"].get<int>(), v);
+  // The vertex held is the one drawn under the cursor: no farther from the press than a
+  // neighbour of it is from it (an edge of the mesh on the screen).
+  const auto at_press = pixel_of(pressed, v);
+  ASSERT_TRUE(at_press);
+  double edge = HUGE_VAL;
+  for (int dv : {1, n}) {
+    const auto nb = pixel_of(pressed, (v + dv) % (n * n));
+    if (nb) edge = std::min(edge, (*nb - *at_press).norm());
+  }
+  EXPECT_LE((*at_press - press).norm(), edge) << "vertex " << v << " at " << at_press->transpose();
+  EXPECT_LE(std::abs(v / n - 3), 1) << "at the place pressed: vertex " << v;
+  // The drag moved the cursor by (30, -20) pixels: the vertex's picture went with it.
+  const auto after = pixel_of(held, v);
+  ASSERT_TRUE(after);
+  const Vec2 want = *at_press + Vec2(30, -20);
+  EXPECT_LT((*after - want).norm(), 12) << "the held vertex is drawn at " << after->transpose() << ", the hand at "
+                                        << want.transpose();
+  EXPECT_EQ(held["true_intersections"].get<int>(), 0);
+}
+
+}  // namespace
+}  // namespace s4d

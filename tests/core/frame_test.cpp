@@ -88,5 +88,104 @@ TEST(Frame, ReflectionIsTurnedIntoRotation) {
   EXPECT_NEAR(f.matrix().determinant(), 1.0, 1e-12);
 }
 
+// Perspective: the shadow from an eye at w = d, lifted back exactly; far away it is the orthographic one.
+TYPED_TEST(FrameTest, PerspectiveLiftUndoesTheShadowAtEveryDepth) {
+  constexpr int D = TypeParam::value;
+  Frame<D> f;
+  f.rotate({0, D - 1}, 0.4);
+  f.rotate({0, 1}, 0.9);
+  f.set_perspective(3.0);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g(0, 2);
+  for (int k = 0; k < 200; ++k) {
+    Vec<D> p;
+    for (int i = 0; i < D; ++i) p[i] = g(rng);
+    const Vec<D> q = f.to_view(p);
+    const Vec<D - 1> s = f.shadow(p);
+    ASSERT_TRUE(s.allFinite());
+    if (q[D - 1] < 3.0 * (1 - Frame<D>::kNearestEye)) {  // in front of the eye: the exact central projection
+      EXPECT_TRUE(s.isApprox(q.template head<D - 1>() * 3.0 / (3.0 - q[D - 1]), 1e-12));
+    }
+    // The point at that depth under that shadow is the point itself (clamped ones too).
+    EXPECT_TRUE(f.to_world(f.lift(s, q[D - 1])).isApprox(p, 1e-12)) << p.transpose();
+  }
+  // The hyperplane w = 0 keeps its size; nearer is larger, farther smaller.
+  const Vec<D - 1> s = Vec<D - 1>::Ones();
+  EXPECT_TRUE(Frame<D>().lift(s, 0).template head<D - 1>().isApprox(s));
+  EXPECT_DOUBLE_EQ(f.magnification(0), 1.0);
+  EXPECT_DOUBLE_EQ(f.magnification(1.5), 2.0);
+  EXPECT_DOUBLE_EQ(f.magnification(-3.0), 0.5);
+}
+
+TYPED_TEST(FrameTest, PerspectiveAtAndBehindTheEyeIsClampedNeverInfinite) {
+  constexpr int D = TypeParam::value;
+  Frame<D> f;
+  f.set_perspective(2.0);
+  for (double w : {2.0, 2.0 - 1e-300, 5.0, 1e300, HUGE_VAL, std::nan("")}) {
+    Vec<D> q = Vec<D>::Ones();
+    q[D - 1] = w;
+    const Vec<D - 1> s = f.project(q);
+    EXPECT_TRUE(s.allFinite()) << w;
+    EXPECT_DOUBLE_EQ(s[0], 1.0 / Frame<D>::kNearestEye) << w;
+  }
+  EXPECT_TRUE(std::isfinite(f.depth_at(std::array<double, 2>{0.5, 0.5}, std::array<double, 2>{5.0, 9.0})));
+}
+
+TYPED_TEST(FrameTest, PerspectiveTendsToTheOrthographicShadow) {
+  constexpr int D = TypeParam::value;
+  Frame<D> ortho;
+  ortho.rotate({0, D - 1}, 0.3);
+  Vec<D> p = Vec<D>::LinSpaced(-1.0, 1.5);
+  double last = HUGE_VAL;
+  for (double d : {10.0, 1e2, 1e3, 1e4, 1e5, 1e6}) {
+    Frame<D> f = ortho;
+    f.set_perspective(d);
+    const double gap = (f.shadow(p) - ortho.shadow(p)).norm();
+    EXPECT_LT(gap, last);  // monotonely closer
+    EXPECT_LT(gap, 10.0 / d);  // |q| |w| / (d - w), about 1/d
+    last = gap;
+  }
+  EXPECT_LT(last, 1e-5);
+  // Orthographic is the default and exactly the leading view coordinates.
+  EXPECT_FALSE(ortho.is_perspective());
+  EXPECT_EQ(ortho.shadow(p), Vec<D - 1>(ortho.to_view(p).template head<D - 1>()));
+}
+
+TYPED_TEST(FrameTest, PerspectiveDepthIsInterpolatedCorrectlyAlongAShadowSegment) {
+  constexpr int D = TypeParam::value;
+  Frame<D> f;
+  f.rotate({0, D - 1}, 0.8);
+  f.set_perspective(4.0);
+  Vec<D> a = Vec<D>::Constant(0.3), b = Vec<D>::LinSpaced(-1.0, 1.2);
+  for (double u : {0.0, 0.25, 0.5, 0.9, 1.0}) {
+    const Vec<D> p = (1 - u) * a + u * b;  // a point of the 4D segment
+    // Where its shadow lies along the shadow segment, and the depth read from there.
+    const Vec<D - 1> sa = f.shadow(a), sb = f.shadow(b), sp = f.shadow(p);
+    const double t = (sp - sa).dot(sb - sa) / (sb - sa).squaredNorm();
+    EXPECT_NEAR((sa + t * (sb - sa) - sp).norm(), 0, 1e-12);  // the shadow of a segment is a segment
+    EXPECT_NEAR(f.depth_at(std::array<double, 2>{1 - t, t}, std::array<double, 2>{f.depth(a), f.depth(b)}),
+                f.depth(p), 1e-12);
+  }
+}
+
+TEST(FramePerspective, BadDistancesAreRefusedWithASentence) {
+  Frame<4> f;
+  for (double d : {0.0, -1.0, std::nan(""), HUGE_VAL, 1e7}) {
+    try {
+      f.set_perspective(d);
+      ADD_FAILURE() << d << " was taken";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("perspective distance"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(f.is_perspective());
+  }
+  f.set_perspective(5);
+  EXPECT_DOUBLE_EQ(f.perspective(), 5);
+  f.rotate({0, 3}, 0.2);  // a turn keeps the eye
+  EXPECT_DOUBLE_EQ(f.perspective(), 5);
+  f.set_orthographic();
+  EXPECT_FALSE(f.is_perspective());
+}
+
 }  // namespace
 }  // namespace s4d

@@ -192,6 +192,22 @@ TEST(SessionFile, NewerAndDamagedOnesAreRefusedSayingWhy) {
             std::string::npos);
 }
 
+// Issue 37: the view's 4D perspective is kept (written only when on: orthographic files are as
+// they were), and a bad distance is refused saying why.
+TEST(SessionFile, ThePerspectiveIsKeptAndABadOneRefused) {
+  SessionFile a = sample();
+  EXPECT_EQ(session_text(a).find("perspective"), std::string::npos) << "orthographic: not written";
+  EXPECT_EQ(parse_session(session_text(a), "t.s4d").view.perspective, 0);
+  a.view.perspective = 2.75;
+  EXPECT_EQ(parse_session(session_text(a), "t.s4d").view.perspective, 2.75);
+  std::string text = session_text(a);
+  for (const char* bad : {"-1", "1e9"}) {
+    std::string t = text;
+    t.replace(t.find("2.75"), 4, bad);
+    EXPECT_NE(error_of(t).find("view.perspective: the perspective distance must be"), std::string::npos) << error_of(t);
+  }
+}
+
 // A writer killed between creating its temporary and the rename leaves FILE.tmp-PID: the next
 // start removes those of processes that are gone, and never one a running writer may still own.
 // The autosave's cache of states' text writes what the plain writer writes, and forgets the

@@ -146,6 +146,7 @@ TEST(KnotInfo, CandidatesAndProofsAreReportedHonestly) {
 }
 
 TEST(KnotInfo, CoverSignaturesSeparateKnotGroups) {
+  if (!regina_available()) GTEST_SKIP() << "covers of the knot group need Regina";
   const KnotDiagram t = braid_diagram(2, {1, 1, 1});
   const KnotDiagram m = braid_diagram(2, {-1, -1, -1});
   const KnotDiagram f = braid_diagram(3, {1, -2, 1, -2});

@@ -9,7 +9,9 @@
 #include <map>
 #include <sstream>
 
+#include "knots/slice_naming.hpp"
 #include "scenario/scenario_run.hpp"
+#include "shape/level_set.hpp"
 
 namespace s4d {
 namespace {
@@ -117,6 +119,30 @@ TEST(ScenarioRun, CurrentSceneCarriesThePositions) {
   ASSERT_EQ(s.vertices.size(), x.size());
   EXPECT_EQ(s.vertices[0], x[0]);
   EXPECT_NE(s.vertices[0], std::get<Surface<4>>(sc.scene.objects[0].shape).vertices[0]) << "the pole was pulled";
+}
+
+// Issue 37: a slice's name does not change while the surface is pulled. The spun trefoil's poles
+// pulled apart as its scenario does: its slice by the hyperplane w = 0 (the spinning plane, in the
+// unturned frame) stays the square knot, 3_1 # 3_1 mirror, at every frame of the pull. A slice
+// can change its knot only where the surface passes through itself, or as a critical level crosses
+// it; the pull in the shadow (w free) does neither.
+TEST(ScenarioRun, ASlicesNameHoldsWhileTheSurfaceIsPulled) {
+  const Scenario sc = load_scenario(kScenarios / "spun-trefoil-tighten.json");
+  const auto run = ScenarioRun::make(sc);
+  const std::vector<Vec4> start = run->positions();
+  const Frame<4> unturned;
+  for (int frame = 0; frame <= 6; ++frame) {
+    const Scene now = run->current_scene();
+    const auto& surface = std::get<Surface<4>>(now.objects.at(0).shape);
+    const SliceNaming n = name_slice(level_set(surface, unturned, 0.0).curve, 0.0);
+    EXPECT_EQ(n.name, "3_1 # 3_1 mirror") << "at " << run->time() << " s: " << n.headline();
+    EXPECT_EQ(n.components, 1);
+    for (int i = 0; i < 250; ++i) run->step();
+  }
+  double moved = 0;
+  const std::vector<Vec4> end = run->positions();
+  for (std::size_t v = 0; v < end.size(); ++v) moved = std::max(moved, (end[v] - start[v]).norm());
+  EXPECT_GT(moved, 0.5) << "the pull deformed the sphere";
 }
 
 }  // namespace

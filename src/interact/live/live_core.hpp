@@ -38,18 +38,30 @@ struct Hand {
   Vec<D> target = Vec<D>::Zero();       // view coordinates
   Vec<D> target_v = Vec<D>::Zero();     // view coordinates, per s
   Vec<D> weight = Vec<D>::Ones();       // 1 on the view axes the band pulls along
+  // R^4 seen in perspective from an eye at this distance along w (0: orthographic). Then the
+  // target's first three coordinates are the hand's point in the shadow, and the vertex is pulled
+  // to the point of its own depth under it (Frame::lift): the shadow follows the hand exactly.
+  double perspective = 0;
   double k = 0, b = 0, max_force = 0;
   // Carrying: the patch of this many rings of mesh edges around the vertex follows the hand
   // kinematically, each vertex by its weight, and stays held where the hand lets go. 0: the band.
   int carry_rings = 0;
   std::uint64_t grab = 0;  // counts the grabs, so that a new grab of the same vertex starts a new patch
+
+  // The target (or its velocity) in view coordinates for the vertex at depth w.
+  Vec<D> in_view(const Vec<D>& t, double w) const {
+    if (!(perspective > 0)) return t;
+    Vec<D> q = t;
+    q.template head<D - 1>() /= Frame<D>::magnification(perspective, w);
+    return q;
+  }
 };
 
 // The band's force on the vertex at world position x, velocity v, in world coordinates.
 template <int D>
 Vec<D> band_force(const Hand<D>& h, const Vec<D>& x, const Vec<D>& v) {
   const Vec<D> q = h.frame.transpose() * x, qv = h.frame.transpose() * v;
-  Vec<D> f = (h.k * (h.target - q) - h.b * (qv - h.target_v)).cwiseProduct(h.weight);
+  Vec<D> f = (h.k * (h.in_view(h.target, q[D - 1]) - q) - h.b * (qv - h.in_view(h.target_v, q[D - 1]))).cwiseProduct(h.weight);
   const double n = f.norm();
   if (!std::isfinite(n)) return Vec<D>::Zero();
   if (n > h.max_force) f *= h.max_force / n;
@@ -375,7 +387,7 @@ class Core {
     }
     // Where the hand wants the centre, as a displacement from its start, on the axes it moves.
     const Vec<D> q0 = hand_.frame.transpose() * carry_start_.front();
-    const Vec<D> want = hand_.frame * (hand_.target - q0).cwiseProduct(hand_.weight);
+    const Vec<D> want = hand_.frame * (hand_.in_view(hand_.target, q0[D - 1]) - q0).cwiseProduct(hand_.weight);
     Vec<D> step = want - carried_;
     const double most = kCarrySpeed * ts, n = step.norm();
     if (!std::isfinite(n)) return;

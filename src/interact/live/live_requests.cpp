@@ -60,13 +60,16 @@ SetFrame SetFrame::from(const Frame<4>& f) {
   SetFrame s;
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k) s.rows[static_cast<std::size_t>(4 * r + k)] = f.matrix()(r, k);
+  s.perspective = f.perspective();
   return s;
 }
 
 Frame<4> SetFrame::frame() const {
   Mat<4> m;
   for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = rows[static_cast<std::size_t>(i)];
-  return Frame<4>(m);
+  Frame<4> f(m);
+  if (Frame<4>::perspective_error(perspective).empty()) f.set_perspective(perspective);  // else orthographic
+  return f;
 }
 
 SetMapping SetMapping::from(const DeviceMapping& m) {

@@ -87,6 +87,7 @@ struct SetDeviceButton {      // what a device's first button does from now on
 // [SECTION] the view and the device
 struct SetFrame {             // the 4D view frame (worlds of R^3 ignore it)
   std::array<double, 16> rows{};  // row-major
+  double perspective = 0;         // the 4D eye's distance (Frame::perspective), 0 orthographic
   static SetFrame from(const Frame<4>& f);
   Frame<4> frame() const;
 };

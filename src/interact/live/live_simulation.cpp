@@ -286,7 +286,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     if constexpr (D == 4) return frame4_.to_world(q);
     else return q;
   }
-  Vec3 shadow(const Vec<D>& p) const { return to_view(p).template head<3>(); }
+  Vec3 shadow(const Vec<D>& p) const {
+    if constexpr (D == 4) return frame4_.shadow(p);
+    else return p;
+  }
 
   Vec3 hand_shadow() const { return mapping_.to_shadow(device_.position) + offset_; }
 
@@ -411,7 +414,9 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     if (v < 0 || v >= static_cast<int>(x.size())) return;
     held_ = v;
     mode_ = mode;
-    const Vec<D> q = to_view(x[v]);
+    // Where it is seen: its shadow (perspective or not) and, in R^4, its depth.
+    Vec<D> q = to_view(x[v]);
+    q.template head<3>() = shadow(x[v]);
     offset_ = q.template head<3>() - mapping_.to_shadow(device_.position);
     grab_view_ = q;
     grab_device_ = device_.position;
@@ -426,7 +431,10 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
     h.max_force = params_[kBandMaxForce].value;
     h.carry_rings = carry_rings_;
     h.grab = grab_count_;
-    if constexpr (D == 4) h.frame = frame4_.matrix();
+    if constexpr (D == 4) {
+      h.frame = frame4_.matrix();
+      h.perspective = frame4_.perspective();
+    }
     h.target = grab_view_;
     if (mode_ == live::GrabMode::kAlongRay) {
       // Along the shadow ray: the device's motion along its y axis moves the depth (w; for a world
@@ -493,7 +501,7 @@ class LiveSimulation final : public HapticScene, public LiveHandover, public Ske
   int button_carry_ = 0;          // what a device's button carries (the tool's rings)
   std::uint64_t grab_count_ = 0;
   Vec3 offset_ = Vec3::Zero();  // shadow: vertex minus hand at the grab
-  Vec<D> grab_view_ = Vec<D>::Zero();
+  Vec<D> grab_view_ = Vec<D>::Zero();  // the held vertex at the grab: its shadow, then (R^4) its w
   Vec3 grab_device_ = Vec3::Zero();
   bool button_ = false, grabbed_by_button_ = false, explored_by_button_ = false;
   DeviceButton button_action_ = DeviceButton::kGrab;

@@ -175,12 +175,13 @@ void SurfaceExplorer::refresh_crossings(std::span<const Vec4> positions, const F
 
 struct SurfaceExplorer::Geometry {
   Vec3 x0, e1, e2;         // shadow of corner 0; edges to corners 1 and 2
-  double w[3];             // 4D depth of the corners
+  std::array<double, 3> w;  // 4D depth of the corners
   double g11, g12, g22, det;
   bool flat;               // false: the shadow is seen edge-on (no plane to walk in)
   Vec3 corner(int k) const { return k == 0 ? x0 : (k == 1 ? Vec3(x0 + e1) : Vec3(x0 + e2)); }
   Vec3 at(const Bary& b) const { return x0 + b[0] * e1 + b[1] * e2; }
-  double depth(const Bary& b) const { return (1 - b[0] - b[1]) * w[0] + b[0] * w[1] + b[1] * w[2]; }
+  const Frame<4>* frame = nullptr;  // reads the depth between the corners (perspective-correct)
+  double depth(const Bary& b) const { return frame->depth_at(std::array<double, 3>{1 - b[0] - b[1], b[0], b[1]}, w); }
 };
 
 bool SurfaceExplorer::geometry(int t, std::span<const Vec4> positions, const Frame<4>& frame,
@@ -189,9 +190,10 @@ bool SurfaceExplorer::geometry(int t, std::span<const Vec4> positions, const Fra
   Vec4 q[3];
   for (int k = 0; k < 3; ++k) q[k] = frame.to_view(positions[tr[k]]);
   if (!q[0].allFinite() || !q[1].allFinite() || !q[2].allFinite()) return false;
-  g.x0 = q[0].head<3>();
-  g.e1 = q[1].head<3>() - g.x0;
-  g.e2 = q[2].head<3>() - g.x0;
+  g.frame = &frame;
+  g.x0 = frame.project(q[0]);
+  g.e1 = frame.project(q[1]) - g.x0;
+  g.e2 = frame.project(q[2]) - g.x0;
   for (int k = 0; k < 3; ++k) g.w[k] = q[k][3];
   g.g11 = g.e1.dot(g.e1);
   g.g12 = g.e1.dot(g.e2);
@@ -473,8 +475,8 @@ void SurfaceExplorer::crossings_on(const Geometry& g, int t, const Bary& a, cons
     const Bary o{h.e->o[0][0] + h.u * (h.e->o[1][0] - h.e->o[0][0]),
                  h.e->o[0][1] + h.u * (h.e->o[1][1] - h.e->o[0][1])};
     const Triangle& to = triangles_[h.e->other];
-    const double w_other = (1 - o[0] - o[1]) * frame.depth(positions[to[0]]) + o[0] * frame.depth(positions[to[1]]) +
-                           o[1] * frame.depth(positions[to[2]]);
+    const double w_other = frame.depth_at(std::array<double, 3>{1 - o[0] - o[1], o[0], o[1]}, std::array<double, 3>{
+        frame.depth(positions[to[0]]), frame.depth(positions[to[1]]), frame.depth(positions[to[2]])});
     ExplorerEvent e;
     e.time = time;
     e.w_self = g.depth(p);

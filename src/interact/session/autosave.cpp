@@ -100,10 +100,13 @@ void Autosaver::claim() {
   struct Candidate {
     int slot = 0;
     FileLock lock;
-    std::optional<SessionFile> unfinished;
+    double saved_at = 0;
   };
   std::vector<Candidate> free, left;
   std::string lock_problem, read_problem;
+  const auto unreadable = [&](const fs::path& p, const std::string& what) {
+    if (read_problem.empty()) read_problem = p.string() + ": the autosave cannot be read: " + what;
+  };
   const int highest = highest_slot(options_.path);
   for (int k = 1; k <= highest + 1; ++k) {
     if (k == highest + 1 && (!free.empty() || !left.empty())) break;  // no new slot needed
@@ -114,14 +117,37 @@ void Autosaver::claim() {
       if (why.rfind("held", 0) != 0 && lock_problem.empty()) lock_problem = why;
       continue;
     }
-    std::string unreadable;
-    std::optional<SessionFile> u = unfinished_autosave(p, &unreadable);
-    if (!unreadable.empty() && read_problem.empty()) read_problem = p.string() + ": " + unreadable;
-    (u ? left : free).push_back({k, std::move(*lock), std::move(u)});
+    // Only the summary: a slot's whole document (its history may be megabytes) is read once it
+    // is chosen, not for every slot at every start.
+    std::optional<SessionSummary> summary;
+    if (fs::exists(p, ec)) {
+      try {
+        summary = read_session_summary(p);
+      } catch (const std::exception& e) {
+        unreadable(p, e.what());
+      }
+    }
+    const bool unfinished = summary && !summary->clean_exit;
+    (unfinished ? left : free).push_back({k, std::move(*lock), summary ? summary->saved_at : 0.0});
   }
+  // The newest unfinished slot whose document reads; one that does not is free to overwrite.
+  std::stable_sort(left.begin(), left.end(), [](const Candidate& a, const Candidate& b) { return a.saved_at > b.saved_at; });
   Candidate* chosen = nullptr;
-  for (Candidate& c : left)
-    if (!chosen || c.unfinished->saved_at > chosen->unfinished->saved_at) chosen = &c;
+  int others = 0;
+  for (Candidate& c : left) {
+    const fs::path p = autosave_slot(options_.path, c.slot);
+    if (chosen) {
+      ++others;
+      continue;
+    }
+    try {
+      unfinished_ = read_session(p);
+      chosen = &c;
+    } catch (const std::exception& e) {
+      unreadable(p, e.what());
+      free.push_back(std::move(c));
+    }
+  }
   if (!chosen && !free.empty()) chosen = &free.front();
   if (!chosen) {  // no lock could be made: the first slot, unguarded, as before slots existed
     path_ = options_.path;
@@ -134,8 +160,7 @@ void Autosaver::claim() {
   }
   path_ = autosave_slot(options_.path, chosen->slot);
   lock_ = std::move(chosen->lock);
-  unfinished_ = std::move(chosen->unfinished);
-  others_unfinished_ = static_cast<int>(left.size()) - (unfinished_ ? 1 : 0);
+  others_unfinished_ = others;
   note_ = read_problem;
   // The other slots' locks are dropped here, as `free` and `left` go.
 }

@@ -338,7 +338,8 @@ void Session::refresh() {
 void Session::refresh_crossings() {
   if (!handover_ || !snapshot_ || !snapshot_->status.exploring || snapshot_->point_dimension != 4) return;
   const auto now = std::chrono::steady_clock::now();
-  const bool turned = (doc_.scene.frame.matrix() - crossings_frame_.matrix()).cwiseAbs().maxCoeff() > 1e-12;
+  const bool turned = (doc_.scene.frame.matrix() - crossings_frame_.matrix()).cwiseAbs().maxCoeff() > 1e-12 ||
+                      doc_.scene.frame.perspective() != crossings_frame_.perspective();
   if (!turned && now - last_crossings_ < std::chrono::milliseconds(250)) return;
   std::vector<Vec4> x(snapshot_->points.size() / 4);
   for (std::size_t i = 0; i < x.size(); ++i)
@@ -571,8 +572,12 @@ Vec4 Session::vertex_view(int v) const {
   std::size_t local = static_cast<std::size_t>(v - first_[static_cast<std::size_t>(o)]);
   Vec4 at = Vec4::Constant(std::numeric_limits<double>::quiet_NaN());
   const auto view = [&](const auto& p) {
-    if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) at = doc_.scene.frame.to_view(p);
-    else at << p, 0;
+    if constexpr (std::decay_t<decltype(p)>::RowsAtCompileTime == 4) {
+      const Vec4 q = doc_.scene.frame.to_view(p);
+      at << doc_.scene.frame.project(q), q[3];
+    } else {
+      at << p, 0;
+    }
   };
   std::visit([&](const auto& sh) {
     using T = std::decay_t<decltype(sh)>;

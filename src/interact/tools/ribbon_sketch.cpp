@@ -225,7 +225,7 @@ std::vector<Piece> overlaps_with(const Surface<4>& flat, const Surface<3>& shado
     std::vector<double> w;
     for (const Vec4& p : other.vertices) {
       const Vec4 q = frame.to_view(p);
-      other_shadow.vertices.push_back(q.head<3>());
+      other_shadow.vertices.push_back(frame.project(q));
       w.push_back(q[3]);
     }
     const IntersectionReport<3> r = surface_intersections<3>(shadow, other_shadow);
@@ -582,7 +582,7 @@ void lift_and_check(const Layout& l, const std::vector<double>& w, std::span<con
   for (int i = 0; i < l.n(); ++i)
     for (int j = 0; j < cols; ++j) {
       const Vec3& s = l.shadow.vertices[i * cols + j];
-      out.surface.vertices.push_back(frame.to_world(Vec4(s.x(), s.y(), s.z(), w[i])));
+      out.surface.vertices.push_back(frame.to_world(frame.lift(s, w[i])));
     }
   const IntersectionReport<4> self = self_intersections<4>(out.surface);
   if (!self.pairs.empty())

@@ -33,7 +33,7 @@ Shape to_shape(const Scene& scene, const Drawn& d) {
       Polyline<4> p{{}, d.components[i].closed};
       for (std::size_t k = 0; k < d.components[i].points.size(); ++k) {
         const Vec3& s = d.components[i].points[k];
-        p.points.push_back(scene.frame.to_world(Vec4(s.x(), s.y(), s.z(), d.w[i][k])));
+        p.points.push_back(scene.frame.to_world(scene.frame.lift(s, d.w[i][k])));
       }
       c.components.push_back(std::move(p));
     }

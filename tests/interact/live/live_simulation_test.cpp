@@ -23,6 +23,8 @@
 #include "io/scene.hpp"
 #include "knots/knot_identify.hpp"
 #include "physics/test_curves.hpp"
+#include "knots/slice_naming.hpp"
+#include "view/scene_slice.hpp"
 
 namespace s4d {
 namespace {
@@ -675,6 +677,45 @@ TEST(ByHand, OnePoleHeldTheOtherPulledTheSpunTrefoilStretches) {
   rig.loop->send(live::command(live::PlayScript{}));
   rig.loop->run_ticks(2);
   EXPECT_EQ(rig.snap().status.pinned, 0) << "the script pulls both poles, holding neither";
+}
+
+// Slices while pulling: the spun trefoil seen in the frame of its spinning plane (level w = 0 is
+// that plane: the square knot), one pole held, the other pulled by hand in the shadow. The level
+// stays regular (the hand moves no vertex in w, and w's critical levels are far from 0), and no
+// pass-through can change a slice's knot type, so the name stays through the whole pull.
+TEST(ByHand, TheSpunTrefoilsSliceKeepsItsNameWhilePulled) {
+  Scenario sc = shipped("spun-trefoil-tighten");
+  sc.scene.frame = Frame<4>{};
+  const Surface<4>& sphere = std::get<Surface<4>>(sc.scene.objects[0].shape);
+  const int last = static_cast<int>(sphere.vertices.size()) - 1;
+  const DeviceMapping m = DeviceMapping::fit(Vec3::Zero(), 3.0, Mat<3>::Identity(), Vec3::Zero(), Vec3::Constant(0.08));
+  const Vec3 d0 = m.to_device(sphere.vertices[0].head<3>());
+  const Vec3 away = (sphere.vertices[0] - sphere.vertices[last]).head<3>().normalized();
+  LiveOptions o;
+  o.start_playing = false;
+  o.mapping = m;
+  HapticLoop loop(std::make_unique<ReplayDevice>(pull(d0, d0 + 1.2 * m.metres_per_unit * away, 1, 100, 1500, 400), false),
+                  make_live_simulation(sc.scene, &sc, o));
+  loop.send(live::command(live::Play{}));
+  const auto slice_now = [&] {
+    Scene now = sc.scene;
+    std::get<Surface<4>>(now.objects[0].shape).vertices = positions(loop.snapshot());
+    return name_slice(scene_slice(now, 0.0).curve, 0.0);
+  };
+  const SliceNaming at_rest = slice_now();
+  ASSERT_EQ(at_rest.name, "3_1 # 3_1 mirror") << at_rest.headline();
+  double pulled = 0;
+  for (int k = 0; k < 5; ++k) {
+    loop.run_ticks(400);
+    const SliceNaming n = slice_now();
+    EXPECT_EQ(n.name, at_rest.name) << "after " << 400 * (k + 1) << " ticks: " << n.headline();
+    EXPECT_EQ(n.components, 1);
+    const int held = loop.snapshot().status.held_vertex;  // at the pole (its shadow meets the first ring's)
+    ASSERT_GE(held, 0);
+    pulled = (positions(loop.snapshot())[static_cast<std::size_t>(held)] - sphere.vertices[static_cast<std::size_t>(held)]).norm();
+  }
+  EXPECT_GT(pulled, 0.8) << "the pole went with the hand";
+  EXPECT_EQ(true_intersections(positions(loop.snapshot()), sc.scene), 0);
 }
 
 // Stopping the script hands the scenario over: the set-up goes on holding where things are.

@@ -18,6 +18,7 @@
 #include <random>
 #include <thread>
 
+#include "core/error.hpp"
 #include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "interact/session/session.hpp"
@@ -191,6 +192,51 @@ TEST(Autosave, EachRunningWindowHasItsOwnSlotAndOnlyDeadOnesAreOffered) {
   Autosaver e({first, 30, 2});
   EXPECT_EQ(e.path(), first);
   EXPECT_FALSE(e.unfinished().has_value());
+}
+
+// A start reads each slot's summary only, then the newest unfinished document in full: one whose
+// summary reads but whose document is damaged is not offered; the next newest is, and the note
+// says which file could not be read.
+TEST(Autosave, TheNewestReadableUnfinishedSlotIsOfferedADamagedOneIsSaid) {
+  const fs::path dir = fs::temp_directory_path() / "s4d_autosave_damaged_slot";
+  fs::remove_all(dir);
+  Session s;
+  open_one_step_in(s);
+  const fs::path first = dir / "auto.s4d";
+  {
+    Autosaver a({first, 30, 2});
+    Autosaver b({first, 30, 2});
+    ASSERT_TRUE(a.save_now(s, false, "SIGTERM"));
+    ASSERT_TRUE(b.save_now(s, false));
+  }
+  const SessionSummary older = read_session_summary(first), newer = read_session_summary(dir / "auto-2.s4d");
+  const SessionFile full = read_session(first);
+  EXPECT_FALSE(older.clean_exit);
+  EXPECT_EQ(older.version, kSessionVersion);
+  EXPECT_EQ(older.saved_at, full.saved_at) << "the summary is the document's";
+  ASSERT_GE(newer.saved_at, older.saved_at);
+  // The newer slot: its summary fields intact, its scene not a scene.
+  { std::ofstream(dir / "auto-2.s4d") << "{\"shadow4d_session\": 3, \"scene\": 7, \"clean_exit\": false, \"saved_at\": 9e9}"; }
+  EXPECT_FALSE(read_session_summary(dir / "auto-2.s4d").clean_exit);
+  Autosaver c({first, 30, 2});
+  ASSERT_TRUE(c.unfinished().has_value()) << "the older unfinished work is still offered";
+  EXPECT_EQ(c.path(), first);
+  EXPECT_EQ(c.unfinished()->closed_by, "SIGTERM");
+  EXPECT_NE(c.note().find("auto-2.s4d"), std::string::npos) << c.note();
+  EXPECT_NE(c.note().find("cannot be read"), std::string::npos) << c.note();
+  // A file of an older order (the three fields last, after the long states) is read to its end.
+  { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": 3, \"history\": [\"" << std::string(20000, 'x')
+                                 << "\"], \"clean_exit\": false, \"saved_at\": 5}"; }
+  const SessionSummary old_order = read_session_summary(dir / "x.s4d");
+  EXPECT_FALSE(old_order.clean_exit);
+  EXPECT_EQ(old_order.saved_at, 5);
+  // Not a session at all, or from a newer shadow4d: said, as a full read says it.
+  { std::ofstream(dir / "x.s4d") << "{\"scene\": {}}"; }
+  EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
+  { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": 99}"; }
+  EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
+  { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": 3, "; }
+  EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
 }
 
 TEST(Autosave, ASignalsNameIsKeptAndSaid) {
