@@ -3,6 +3,7 @@
 // "history": [...], "history_head", "history_states": [...]}.
 #include "io/session_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -343,7 +344,8 @@ class SummarySax final : public nlohmann::json_sax<Json> {
  private:
   bool number(double v) {
     if (depth_ == 1 && key_ == "shadow4d_session") {
-      summary.version = std::isfinite(v) && v == std::floor(v) ? static_cast<int>(v) : -1;
+      // Clamped before the cast: a huge number is a version from the future, never UB.
+      summary.version = v == std::floor(v) ? static_cast<int>(std::clamp(v, -1.0, 1e9)) : -1;
       has_version = true;
     }
     if (depth_ == 1 && key_ == "saved_at" && std::isfinite(v)) {

@@ -31,12 +31,7 @@ std::string KnotInvariants::homfly_text() const { return homfly.str("a", "z"); }
 namespace {
 
 KnotInvariants own_invariants(const KnotDiagram& diagram) {
-  KnotInvariants inv;
-  inv.engine = KnotEngine::kOwn;
-  inv.components = diagram.component_count();
-  inv.diagram_crossings = diagram.crossing_count();
-  inv.writhe = diagram.writhe();
-  inv.linking = diagram.linking_numbers();
+  KnotInvariants inv;  // the simplification and the polynomials; compute_invariants does the rest
   const GaussDiagram simple = simplify_gauss(GaussDiagram::of(diagram));
   const KnotDiagram s = simple.diagram();
   inv.simplified_crossings = s.crossing_count();
@@ -44,23 +39,31 @@ KnotInvariants own_invariants(const KnotDiagram& diagram) {
   if (s.crossing_count() > 0) inv.simplified_pd = s.pd_code();
   inv.simplified_pieces = diagram_pieces(s);
   inv.homfly = homfly_polynomial(simple);
-  inv.jones = jones_from_homfly(inv.homfly, inv.components);
-  inv.alexander = alexander_from_homfly(inv.homfly);
-  inv.determinant = abs_at_t_minus_one(inv.jones);
-  inv.fingerprint = homfly_fingerprint(inv.homfly);
-  inv.mirror_fingerprint = homfly_fingerprint(inv.homfly.mirror_alpha());
+  inv.jones = jones_from_homfly(inv.homfly, diagram.component_count());
   return inv;
 }
 
 }  // namespace
 
 KnotInvariants compute_invariants(const KnotDiagram& diagram, KnotEngine engine) {
+  // Each engine simplifies and computes the polynomials; what the diagram itself says and what
+  // follows from the polynomials is the same for both.
 #if S4D_WITH_REGINA
-  if (engine == KnotEngine::kRegina) return regina_invariants(diagram);
+  KnotInvariants inv = engine == KnotEngine::kRegina ? regina_invariants(diagram) : own_invariants(diagram);
 #else
   if (engine == KnotEngine::kRegina) throw Error("this build has no Regina (S4D_WITH_REGINA=OFF)");
+  KnotInvariants inv = own_invariants(diagram);
 #endif
-  return own_invariants(diagram);
+  inv.engine = engine;
+  inv.components = diagram.component_count();
+  inv.diagram_crossings = diagram.crossing_count();
+  inv.writhe = diagram.writhe();
+  inv.linking = diagram.linking_numbers();
+  inv.alexander = alexander_from_homfly(inv.homfly);
+  inv.determinant = abs_at_t_minus_one(inv.jones);
+  inv.fingerprint = homfly_fingerprint(inv.homfly);
+  inv.mirror_fingerprint = homfly_fingerprint(inv.homfly.mirror_alpha());
+  return inv;
 }
 
 ReginaCodes regina_codes(const KnotDiagram& diagram, KnotEngine engine) {

@@ -81,13 +81,7 @@ Laurent2 from_regina(const regina::Laurent2<regina::Integer>& p, long bound) {
 }  // namespace
 
 KnotInvariants regina_invariants(const KnotDiagram& diagram) {
-  KnotInvariants inv;
-  inv.engine = KnotEngine::kRegina;
-  inv.components = diagram.component_count();
-  inv.diagram_crossings = diagram.crossing_count();
-  inv.writhe = diagram.writhe();
-  inv.linking = diagram.linking_numbers();
-
+  KnotInvariants inv;  // the simplification and the polynomials; compute_invariants does the rest
   regina::Link link = to_regina_link(diagram);
   link.intelligentSimplify();
   inv.simplified_crossings = static_cast<int>(link.size());
@@ -98,10 +92,6 @@ KnotInvariants regina_invariants(const KnotDiagram& diagram) {
   const long bound = 2 * static_cast<long>(link.size() + link.countComponents()) + 1;
   inv.homfly = from_regina(link.homflyAZ(), bound);
   inv.jones = from_regina(link.jones());
-  inv.alexander = alexander_from_homfly(inv.homfly);
-  inv.determinant = abs_at_t_minus_one(inv.jones);
-  inv.fingerprint = homfly_fingerprint(inv.homfly);
-  inv.mirror_fingerprint = homfly_fingerprint(inv.homfly.mirror_alpha());
   return inv;
 }
 

@@ -1,7 +1,9 @@
 // Handover<T>: the UI gives a heap object to a real-time thread and takes it back to free it,
 // neither side ever waiting or the real-time side ever allocating or freeing: one slot for the
-// latest offer (a newer one replaces it), one for the object the taker is done with.
+// latest offer (a newer one replaces it), and slots for the objects the taker is done with, which
+// the next offer frees.
 #pragma once
+#include <array>
 #include <atomic>
 #include <memory>
 
@@ -12,36 +14,41 @@ class Handover {
  public:
   ~Handover() {
     delete offered_.exchange(nullptr);
-    delete retired_.exchange(nullptr);
+    for (auto& r : retired_) delete r.exchange(nullptr);
     delete backlog_;
   }
   // UI thread: the latest offer wins; what the taker gave back is freed here.
   void offer(std::unique_ptr<T> value) {
-    delete retired_.exchange(nullptr, std::memory_order_acq_rel);
+    for (auto& r : retired_) delete r.exchange(nullptr, std::memory_order_acq_rel);
     delete offered_.exchange(value.release(), std::memory_order_acq_rel);
   }
   // Taker thread: the offer, if any. Give it back with retire() when done with it.
   T* take() {
-    if (backlog_ && retire_into_slot(backlog_)) backlog_ = nullptr;
-    if (backlog_) return nullptr;  // two given back and not collected: wait for the next offer()
+    if (backlog_ && give_back(backlog_)) backlog_ = nullptr;
+    if (backlog_) return nullptr;  // never reached (see retired_): wait for the next offer()
     return offered_.exchange(nullptr, std::memory_order_acq_rel);
   }
-  // An offer can come between a take() and its retire(), finding the slot empty and collecting
-  // nothing; the taker then keeps what it gives back in its own backlog (it never frees), so the
-  // newer offer is still taken at once rather than waiting for yet another offer().
   void retire(T* value) {
-    if (!retire_into_slot(value)) backlog_ = value;
+    if (!give_back(value)) backlog_ = value;
   }
 
  private:
-  bool retire_into_slot(T* value) {
-    T* empty = nullptr;
-    return retired_.compare_exchange_strong(empty, value, std::memory_order_acq_rel);
+  bool give_back(T* value) {
+    for (auto& r : retired_) {
+      T* empty = nullptr;
+      if (r.compare_exchange_strong(empty, value, std::memory_order_acq_rel)) return true;
+    }
+    return false;
   }
 
   std::atomic<T*> offered_{nullptr};
-  std::atomic<T*> retired_{nullptr};
-  T* backlog_ = nullptr;  // the taker's alone
+  // Between two offers' collections the taker gives back at most three objects: one it held from
+  // before the first, the offer that collection found not yet taken, and the one published after
+  // it (checked over every interleaving of offers against the taker's steps). One slot was not
+  // enough: an offer that collected while the taker still held its object left the slot to be
+  // filled after it, and the next offer then waited for yet another offer to be taken.
+  std::array<std::atomic<T*>, 3> retired_{};
+  T* backlog_ = nullptr;  // the taker's alone, should the bound ever be wrong: take() then waits
 };
 
 }  // namespace s4d

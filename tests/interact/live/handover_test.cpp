@@ -30,7 +30,7 @@ TEST(Handover, AnOfferMadeWhileTheTakerHoldsTheLastIsStillTaken) {
 
 // Offers as fast as keys go against a taker on its own thread: the last offer is always taken.
 TEST(Handover, TheLastOfManyQuickOffersIsTaken) {
-  for (int round = 0; round < 200; ++round) {
+  for (int round = 0; round < 1000; ++round) {
     Handover<int> h;
     std::atomic<int> last{0};
     std::atomic<bool> stop{false};
@@ -42,7 +42,10 @@ TEST(Handover, TheLastOfManyQuickOffersIsTaken) {
         }
       }
     });
-    for (int i = 1; i <= 3; ++i) h.offer(std::make_unique<int>(i));
+    for (int i = 1; i <= 3; ++i) {
+      h.offer(std::make_unique<int>(i));
+      for (int spin = 0; spin < (round * 7 + i * 13) % 64; ++spin) std::atomic_signal_fence(std::memory_order_seq_cst);
+    }
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (last.load() != 3 && std::chrono::steady_clock::now() < until) std::this_thread::yield();
     stop.store(true);

@@ -235,6 +235,11 @@ TEST(Autosave, TheNewestReadableUnfinishedSlotIsOfferedADamagedOneIsSaid) {
   EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
   { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": 99}"; }
   EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
+  // A version far past any int (the fuzzer's 1.1e75) is one from the future, not undefined.
+  for (const char* huge : {"1.11111e75", "-1e300", "1e400"}) {
+    { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": " << huge << "}"; }
+    EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError) << huge;
+  }
   { std::ofstream(dir / "x.s4d") << "{\"shadow4d_session\": 3, "; }
   EXPECT_THROW(read_session_summary(dir / "x.s4d"), ParseError);
 }
