@@ -594,6 +594,8 @@ void KnotPanels::dump(nlohmann::ordered_json& out) const {
   for (const auto& [label, r] : buttons_) buttons[label] = {r[0], r[1], r[2], r[3]};
   out["buttons"] = buttons;
   out["name_hidden"] = name_hidden_;
+  // The name as the panel shows it, with its "(proven)" state (the page's tests compare both).
+  if (shown_ && shown_->info) out["shown"] = {{"name", shown_->info->name}, {"proven", shown_->info->proven}};
   Json same = Json::object();
   if (pair_names_) same["pair"] = {pair_names_->a, pair_names_->b, pair_names_->same};
   if (same_answer_) {

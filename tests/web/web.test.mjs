@@ -105,10 +105,14 @@ async function litShare(page, file) {
 // move-view takes half-sides of the 3D view from its centre, as in tests/app/gui_smoke_test.cpp.
 const viewAt = (x, y) => `move-view ${((x - 640) / 400).toFixed(5)} ${((400 - y) / 400).toFixed(5)}`;
 
+// The start page's buttons, kept for the knot sketch test below (it presses one as a user).
+let startCards = null;
 test('the start page appears with no file', async () => {
   const { page, dumps } = await runPage('start', '', ['20 dump -'], 1);
   assert.equal(dumps[0].start_page, true);
   assert.ok(dumps[0].start_cards.length > 0, 'the start page offers examples');
+  startCards = Object.fromEntries(dumps[0].start_cards.map((c) => [c.name, c]));
+  assert.ok(startCards['Sketch a knot'], 'the start page has "Sketch a knot"');
   assert.ok(await litShare(page, path.join(shotDir, 'start.png')) > 0.02, 'the start page is drawn');
   await page.close();
 });
@@ -164,3 +168,72 @@ test('a session survives a reload through IndexedDB', async () => {
   assert.match(d.restore_offer.opened, /spun-trefoil-tighten/);
   await again.page.close();
 });
+
+// The Knot panel's name, with "(proven)" or not, as the dump gives it.
+const shownName = (d) => d.knot_panels.shown ?? { name: '', proven: false };
+
+test('a trefoil sketched in the page with the knot sketch tool is named 3_1', async () => {
+  assert.ok(startCards, 'the start page test ran first');
+  const b = startCards['Sketch a knot'];
+  const cx = Math.round(b.x + b.w / 2), cy = Math.round(b.y + b.h / 2);
+  // As tests/app/gui_smoke_test.cpp draws it on the desktop: the trefoil of Fig. 4, shift (under)
+  // and ctrl (over) held by turns as the stroke meets the strands drawn before; Enter finishes.
+  const l = [`3 move ${cx} ${cy}`, '5 press left', '7 release left', '10 ' + viewAt(640, 440),
+             '14 ' + viewAt(640, 441), '20 press left'];
+  // One frame a point (the desktop test takes two): the page's frames are slower.
+  const n = 360, first = 22;
+  let under = false, over = false;
+  for (let i = 0; i <= n; ++i) {
+    const t = 2 * Math.PI * 1.03 * i / n;
+    const frame = first + i;
+    const wantUnder = -Math.sin(3 * t) < 0;
+    if (wantUnder !== under) l.push(`${frame} ${wantUnder ? 'key-down' : 'key-up'} LEFT_SHIFT`);
+    if (!wantUnder !== over) l.push(`${frame} ${!wantUnder ? 'key-down' : 'key-up'} LEFT_CONTROL`);
+    under = wantUnder;
+    over = !wantUnder;
+    const x = 640 + 45 * (Math.sin(t) + 2 * Math.sin(2 * t)), y = 400 - 45 * (Math.cos(t) - 2 * Math.cos(2 * t));
+    l.push(`${frame} ${viewAt(Math.round(x), Math.round(y))}`);
+  }
+  const end = first + n;
+  l.push(`${end + 2} key-up LEFT_SHIFT`, `${end + 2} key-up LEFT_CONTROL`, `${end + 30} release left`,
+         `${end + 32} dump -`, `${end + 40} key ENTER`, `${end + 42} wait`, `${end + 44} wait`, `${end + 46} dump -`);
+  const { page, dumps } = await runPage('sketch', '', l, 2);
+  const [drawn, named] = dumps;
+  assert.equal(drawn.tool, 'Sketch a knot');
+  assert.equal(drawn.sketch.components, 1);
+  assert.ok(drawn.sketch.crossings_chosen >= 3, 'each later passage crossed by a choice');
+  assert.equal(named.objects, 1, named.status);
+  assert.match(named.sketch.last_name, /^3_1/, named.sketch.last_gauss);
+  assert.match(shownName(named).name, /^3_1/, named.status);
+  assert.equal(shownName(named).proven, true, 'the desktop own engine proves the trefoil');
+  await page.close();
+});
+
+// Table knots and links opened by address (?open=knot:NAME), then by the input file's `open`, named
+// as the desktop's own engine names them: `shadow4d knot make NAME --out k.curve` then
+// `shadow4d knot identify k.curve --engine own` (the page has no Regina; see docs/web.md).
+const desktopNames = [
+  ['4_1', '4_1 (DT 4a_1)', true],
+  ['7_4', '7_4 (DT 7a_6)', true],
+  ['10_123', '10_123 (DT 10a_121)', true],
+  ['12n_242', '12n_242', true],
+  ['L6a4', 'L6a4 (Borromean rings)', true],
+  ['L7n1', 'L7n1', true],
+];
+test('table knots and links opened by address get the desktop own engine names', async () => {
+  const lines = [];
+  desktopNames.forEach(([name], i) => {
+    const at = 10 + 20 * i;
+    if (i > 0) lines.push(`${at} open knot:${name}`);
+    lines.push(`${at + 4} wait`, `${at + 8} wait`, `${at + 12} dump -`);
+  });
+  const { page, dumps } = await runPage('table-names', `open=knot:${desktopNames[0][0]}`, lines, desktopNames.length);
+  desktopNames.forEach(([name, want, proven], i) => {
+    const d = dumps[i];
+    assert.equal(d.error, '', `${name}: ${d.error}`);
+    assert.equal(shownName(d).name, want, `${name}: ${d.status}`);
+    assert.equal(shownName(d).proven, proven, `${name}: proven as on the desktop`);
+  });
+  await page.close();
+});
+

@@ -12,6 +12,7 @@
 #include "interact/live/curve_explorer.hpp"
 #include "interact/live/curve_sketch_scene.hpp"
 #include "interact/live/surface_explorer.hpp"
+#include "knots/knot_table.hpp"
 #include "scenario/world_builder.hpp"
 
 namespace s4d {
@@ -65,6 +66,16 @@ CurveSketch* Session::curve_sketch() { return sketch_host_ ? &sketch_host_->curv
 Document load_document(const std::string& spec) {
   Document d;
   d.spec = spec;
+  // "knot:NAME": a knot or link of the table drawn as `knot make NAME` draws it, so that a page
+  // address (index.html?open=knot:10_123) or `shadow4d open` can start from any table entry.
+  if (spec.starts_with(kTableKnotPrefix)) {
+    const std::string name = spec.substr(kTableKnotPrefix.size());
+    SceneObject o;
+    o.name = name;
+    o.shape = make_table_knot(name);
+    d.scene.objects.push_back(std::move(o));
+    return d;
+  }
   d.scene = load_scene_or_object(spec);
   if (is_scenario(d.scene)) d.scenario = scenario_of_scene(d.scene, spec);
   return d;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "haptics/haptic_loop.hpp"
 #include "interact/session/history.hpp"
@@ -38,7 +39,9 @@ struct Document {
   std::optional<Scenario> scenario;
   std::string spec;  // what was opened
 };
+// "knot:NAME" opens a knot or link of the table (3_1, 10_123, L6a4, T(2,5), m3_1) as a curve.
 // Throws s4d::Error / ParseError with the reason; nothing is changed then.
+inline constexpr std::string_view kTableKnotPrefix = "knot:";
 Document load_document(const std::string& spec);
 
 // Timings the window shows, measured over the last second of snapshots.
