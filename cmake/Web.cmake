@@ -62,6 +62,7 @@ function(s4d_web_page target)
   target_link_options(${target} PRIVATE
     -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=128MB -sFORCE_FILESYSTEM=1 -lidbfs.js
     -sEXPORTED_RUNTIME_METHODS=[FS,ENV,IDBFS,callMain,UTF8ToString,addRunDependency,removeRunDependency]
+    -sEXPORTED_FUNCTIONS=[_main,_malloc,_free]
     "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/data/knots@/shadow4d/data/knots"
     "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/scenarios@/shadow4d/scenarios"
     "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/scenes@/shadow4d/scenes"

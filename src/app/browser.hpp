@@ -4,6 +4,7 @@
 #pragma once
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace s4d {
 
@@ -18,5 +19,24 @@ void persist_browser_files();
 
 // Hands a file of the page's memory to the browser as a download (Save). False on the desktop.
 bool offer_download(const std::string& path);
+
+// The page's canvas and window take the browser window's inner size (CSS pixels) whenever it
+// changes (the window's size callback and the next frame's layout follow). Nothing on the desktop.
+void follow_browser_window();
+
+// The page's two-finger gestures since the last call (index.html turns touches into these): the
+// fingers' centre moved by (dx, dy) pixels (turn the view as a drag does) and their distance
+// grew `scale` times (zoom as the wheel does). None on the desktop.
+struct TouchGesture {
+  double dx = 0, dy = 0, scale = 1;
+};
+TouchGesture take_touch_gesture();
+
+// File > Open in the page: the browser's file picker (<input type=file>) for files ending in one
+// of `extensions`. The chosen file is copied into the page's memory and comes back through
+// take_chosen_files. False on the desktop (it has a dialog of its own).
+bool choose_file_to_open(const std::vector<std::string>& extensions);
+// The page-memory paths of the files chosen since the last call (none on the desktop).
+std::vector<std::string> take_chosen_files();
 
 }  // namespace s4d

@@ -243,6 +243,8 @@ class GuiApp {
         autosaver_({options.autosave, options.autosave_seconds, 3}) {
     autosaver_.set_written(persist_browser_files);  // the web page's autosaves go on to IndexedDB
     input_.attach(window);
+    // In the page, the canvas and the window take the browser window's size as it changes.
+    follow_browser_window();
     input_.set_script(std::move(script));
     connect_session();
     model_.autosave_path = autosaver_.path().string();
@@ -279,6 +281,7 @@ class GuiApp {
     sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
     take_marked_sheet();
     route_input(model_, routing_, input_, ti, knot_panels_);
+    take_touch_gesture_now();
     draw_panels();
     keep_messages();
     ImGui::Render();
@@ -381,6 +384,12 @@ class GuiApp {
       ++script_frame_;
       waited_ = 0;
     }
+    for (std::string& path : take_chosen_files()) {  // File > Open in the page: as a dropped file
+      InputEvent chosen;
+      chosen.kind = InputEvent::Kind::open;
+      chosen.text = std::move(path);
+      input_.live(chosen);
+    }
     for (const InputEvent& e : input_.begin_frame(script_frame_)) {
       if (e.kind == InputEvent::Kind::open) Panels::open(model_, e.text);
       else if (e.kind == InputEvent::Kind::shot) shots_.push_back(e.text);
@@ -419,6 +428,9 @@ class GuiApp {
     ImGui::StyleColorsDark(&style);
     style.Colors[ImGuiCol_WindowBg].w = 1.0f;  // the panels are beside the view, not over it
     style.ScaleAllSizes(scale);
+    // The layout gives the status line and a folded column less than ImGui's default least window
+    // (32 px): at that size they reached past the window's edge.
+    style.WindowMinSize = ImVec2(4 * scale, 4 * scale);
     ImGui::GetStyle() = style;
   }
 
@@ -515,6 +527,14 @@ class GuiApp {
     ti.alt = input_.alt();
     ti.time = glfwGetTime();
     return ti;
+  }
+
+  // Two fingers on a touch screen (the page): turn the view as a drag of empty space does, and
+  // zoom as the wheel does (one wheel step zooms 1.1 times).
+  void take_touch_gesture_now() {
+    const TouchGesture g = take_touch_gesture();
+    if (g.dx != 0 || g.dy != 0) model_.view.drag(DragMode::kTrackball, g.dx, g.dy, model_.layout.view.h);
+    if (g.scale != 1) model_.view.scroll(std::log(g.scale) / std::log(1.1));
   }
 
   void draw_panels() {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include "app/dock.hpp"
@@ -126,6 +127,9 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Rect& view)
   Json controls = Json::object();
   for (const auto& [name, r] : model.view_controls) controls[name] = {r.x, r.y, r.right(), r.bottom()};
   j["view_controls"] = controls;
+  const Eigen::Quaterniond& q = model.view.trackball();
+  j["trackball"] = {q.w(), q.x(), q.y(), q.z()};
+  j["zoom"] = model.view.zoom();
   j["objects"] = model.scene().objects.size();
   if (model.intersections.computed) {
     Json pinch = Json::array();
@@ -173,6 +177,8 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
   // Where the window's parts are: the 3D view and every panel drawn this frame.
   auto rect = [](const Rect& r) { return Json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
   j["view"] = rect(view);
+  const ImVec2 display = ImGui::GetIO().DisplaySize;  // the window's size (the page's: the browser's)
+  j["window"] = {{"w", display.x}, {"h", display.y}};
   Json panels = Json::array();
   for (const auto& [name, r] : visible_windows()) {
     Json p = rect(r);

@@ -15,6 +15,12 @@
 
 namespace s4d {
 
+#ifdef __EMSCRIPTEN__
+constexpr bool kPageBuild = true;
+#else
+constexpr bool kPageBuild = false;
+#endif
+
 namespace {
 
 const std::map<std::string, int>& key_names() {
@@ -271,9 +277,15 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   std::vector<InputEvent> events;
   events.swap(live_);
   if (!script_.empty()) had_script_ = true;
-  // A scripted run ignores the real pointer (Xvfb's may sit anywhere) but keeps typed text.
-  if (had_script_)
-    std::erase_if(events, [](const InputEvent& e) { return e.kind != InputEvent::Kind::chr; });
+  // A scripted run on the desktop ignores the real pointer (Xvfb's may sit anywhere) but keeps the
+  // keys, typed text and files dropped or chosen (a page's test presses Ctrl+O and picks a file).
+  // The page's pointer moves only when someone moves it: its tests touch the screen through it.
+  if (had_script_ && !kPageBuild)
+    std::erase_if(events, [](const InputEvent& e) {
+      using K = InputEvent::Kind;
+      return e.kind == K::move || e.kind == K::move_by || e.kind == K::press || e.kind == K::release ||
+             e.kind == K::scroll;
+    });
   while (!script_.empty() && script_.front().frame <= frame) {
     events.push_back(script_.front());
     script_.pop_front();
