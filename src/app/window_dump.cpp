@@ -179,6 +179,9 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
   j["view"] = rect(view);
   const ImVec2 display = ImGui::GetIO().DisplaySize;  // the window's size (the page's: the browser's)
   j["window"] = {{"w", display.x}, {"h", display.y}};
+  if (model.audio)  // cues started and samples mixed: the page's Web Audio, the desktop's SDL2
+    j["audio"] = {{"status", model.audio->status()}, {"available", model.audio->available()},
+                  {"cues_started", model.audio->cues_started()}, {"frames_rendered", model.audio->frames_rendered()}};
   Json panels = Json::array();
   for (const auto& [name, r] : visible_windows()) {
     Json p = rect(r);

@@ -394,5 +394,9 @@ test('one finger grabs a vertex, two fingers pinch-zoom the view', async () => {
   const pinched = await next();
   assert.ok(Math.abs(pinched.zoom / zoom0 - 3) < 0.05, `spreading two fingers three times as far zooms 3x (${zoom0} -> ${pinched.zoom})`);
   assert.equal(pinched.held_vertex, -1, 'two fingers grab nothing');
+  // The page's sound: Web Audio, resumed when the first finger lifted (a user's gesture), asks the
+  // app's cue mixer for samples (the cues themselves come from Explore's passes, not from a grab).
+  assert.match(pinched.audio.status, /Web Audio/);
+  assert.ok(pinched.audio.frames_rendered > 0, `Web Audio asked for samples (${JSON.stringify(pinched.audio)})`);
   await page.close();
 });
