@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages shadow4d needs that are not yet installed (as root or via sudo).
-# Usage: scripts/install-deps.sh [build|test]   (test adds what only the test suite needs)
+# Usage: scripts/install-deps.sh [build|test|web]   (test adds what only the test suite needs, web
+# what the web page's build and browser tests need; test includes web)
 set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
@@ -9,6 +10,12 @@ packages=(
   regina-normal-dev libgmp-dev libxml2-dev libspnav-dev libsdl2-dev libasound2-dev
   libgtest-dev libbenchmark-dev
 )
+if [[ "${1:-build}" == test || "${1:-build}" == web ]]; then
+  # The web page (scripts/build-web.sh, scripts/test-web.sh): Debian's emscripten, xz for Dear
+  # ImGui's source package, Chromium for the browser tests, npm for their playwright-core.
+  packages+=(emscripten xz-utils chromium)
+  command -v npm >/dev/null || packages+=(npm)
+fi
 if [[ "${1:-build}" == test ]]; then
   # clang and its sanitizer and libFuzzer runtimes for the checked builds; llvm for the
   # symbolizer that puts file:line into their reports.

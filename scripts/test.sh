@@ -24,6 +24,11 @@ phase "install deps" scripts/install-deps.sh test
 phase "release: configure" cmake --preset release
 phase "release: build" cmake --build --preset release -j"$jobs"
 phase "release: tests" ctest --preset release -j"$jobs"
+# The web page: emscripten's build of the window and its tests in headless Chromium (S4D_WEB=0 skips).
+if [[ "${S4D_WEB:-1}" != 0 ]]; then
+  phase "web: build" scripts/build-web.sh build-web/site build-web
+  phase "web: tests" scripts/test-web.sh build-web/site
+fi
 [[ "${S4D_CHECKED:-1}" == 0 ]] && exit 0
 
 # ASan + UBSan: the whole suite but the window (the asan preset builds no GUI: the app's window

@@ -10,6 +10,9 @@
 namespace s4d::cli {
 
 bool has_display() {
+#ifdef __EMSCRIPTEN__
+  return true;  // the web page: its canvas
+#endif
   const char* x = std::getenv("DISPLAY");
   const char* w = std::getenv("WAYLAND_DISPLAY");
   return (x && *x) || (w && *w);

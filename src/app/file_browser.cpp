@@ -76,9 +76,11 @@ std::optional<fs::path> FileBrowser::draw() {
     folder_ = go_into;
     refresh();
   }
-  ImGui::InputText("file", name_, sizeof name_);
+  // The name field has the keys as the dialog appears (type a name, Enter saves or opens).
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  const bool entered = ImGui::InputText("file", name_, sizeof name_, ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
-  if (ImGui::Button(save_ ? "Save" : "Open") && name_[0]) {
+  if ((ImGui::Button(save_ ? "Save" : "Open") || entered) && name_[0]) {
     const fs::path p(name_);
     chosen = p.is_absolute() ? p : folder_ / p;
   }

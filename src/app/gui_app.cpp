@@ -17,10 +17,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <thread>
 #include <utility>
 #include <nlohmann/json.hpp>
 
+#include "app/browser.hpp"
 #include "app/dock.hpp"
 #include "app/haptics_window.hpp"
 #include "app/hint_markers.hpp"
@@ -37,6 +39,7 @@
 #include "app/window_input.hpp"
 #include "core/camera.hpp"
 #include "core/stop_signal.hpp"
+#include "core/threads.hpp"
 #include "interact/session/autosave.hpp"
 #include "interact/live/live_simulation.hpp"
 #include "io/image.hpp"
@@ -238,7 +241,10 @@ class GuiApp {
   GuiApp(GLFWwindow* window, const GuiOptions& options, std::vector<InputEvent> script)
       : window_(window), options_(options), knot_panels_(options.exercise_seed),
         autosaver_({options.autosave, options.autosave_seconds, 3}) {
+    autosaver_.set_written(persist_browser_files);  // the web page's autosaves go on to IndexedDB
     input_.attach(window);
+    // In the page, the canvas and the window take the browser window's size as it changes.
+    follow_browser_window();
     input_.set_script(std::move(script));
     connect_session();
     model_.autosave_path = autosaver_.path().string();
@@ -249,45 +255,52 @@ class GuiApp {
     objects_seen_ = model_.scene().objects.size();
   }
 
-  // Runs until the window is closed, the user quits or the frame count is reached; returns the
-  // process exit code.
-  int run() {
-    for (int frame = 1; !glfwWindowShouldClose(window_) && !model_.quit; ++frame) {
-      if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, marked unfinished to be offered back
-        const bool save = !model_.pending_restore && options_.autosave_seconds > 0;
-        if (save) autosaver_.save_now(model_.session, false, signal_name(stop_signal()));
-        std::cerr << "shadow4d: " << signal_name(stop_signal()) << ": the window closed"
-                  << (save ? "; its work is in " + autosaver_.path().string() : std::string()) << "\n";
-        model_.session.close();
-        return exit_code_;
-      }
-      glfwPollEvents();
-      update_ui_scale();
-      take_script_events();
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      input_.write_to_imgui();
-      ImGui::NewFrame();
-      lay_out(window_size(window_));
-      update_session();
-      const ToolInput ti = tool_input();
-      sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
-      take_marked_sheet();
-      route_input(model_, routing_, input_, ti, knot_panels_);
-      draw_panels();
-      keep_messages();
-      ImGui::Render();
-      const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
-      draw_scene_and_shots(last);
-      if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
-      model_.knot_panel_name = knot_panels_.shown_name();
-      for (const std::string& path : dumps_)
-        dump_state(model_, knot_panels_, slice_panel_, hints_, path, renderer_.camera(), frame);
-      dumps_.clear();
-      glfwSwapBuffers(window_);
-      if (last) break;
+  // One frame of the loop: false when the window is done (closed, quit, the frame count reached,
+  // a signal), finish() then ends it. The web page's frame loop calls this from the browser's.
+  bool frame() {
+    if (glfwWindowShouldClose(window_) || model_.quit) return false;
+    const int frame = ++frames_;
+    if (stop_requested()) {  // SIGINT, SIGTERM, SIGHUP: a last autosave, marked unfinished to be offered back
+      const bool save = !model_.pending_restore && options_.autosave_seconds > 0;
+      if (save) autosaver_.save_now(model_.session, false, signal_name(stop_signal()));
+      std::cerr << "shadow4d: " << signal_name(stop_signal()) << ": the window closed"
+                << (save ? "; its work is in " + autosaver_.path().string() : std::string()) << "\n";
+      stopped_ = true;
+      return false;
     }
-    if (!model_.pending_restore && options_.autosave_seconds > 0) autosaver_.save_now(model_.session, true);
+    glfwPollEvents();
+    update_ui_scale();
+    take_script_events();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    input_.write_to_imgui();
+    ImGui::NewFrame();
+    lay_out(window_size(window_));
+    update_session();
+    const ToolInput ti = tool_input();
+    sync_view(model_, renderer_.camera(), sent_frame_, sent_mapping_);
+    take_marked_sheet();
+    route_input(model_, routing_, input_, ti, knot_panels_);
+    take_touch_gesture_now();
+    draw_panels();
+    keep_messages();
+    ImGui::Render();
+    const bool last = (options_.frames > 0 && frame >= options_.frames) || model_.quit;
+    draw_scene_and_shots(last);
+    if (!model_.pending_restore) autosaver_.tick(model_.session, std::chrono::steady_clock::now());
+    model_.knot_panel_name = knot_panels_.shown_name();
+    for (const std::string& path : dumps_)
+      dump_state(model_, knot_panels_, slice_panel_, hints_, path, renderer_.camera(), frame);
+    dumps_.clear();
+    glfwSwapBuffers(window_);
+    return !last;
+  }
+
+  // After the last frame: the autosave of a clean quit (not after a signal, whose was written),
+  // and the simulation stopped. Returns the process exit code.
+  int finish() {
+    if (!stopped_ && !model_.pending_restore && options_.autosave_seconds > 0)
+      autosaver_.save_now(model_.session, true);
     model_.session.close();
     return exit_code_;
   }
@@ -318,6 +331,9 @@ class GuiApp {
       f.tool_settings = tool_settings(model_);
     };
     model_.session_options.device = options_.device.empty() ? "mouse" : options_.device;
+    // Without threads (the web page) the frame loop steps the haptic loop and the World.
+    model_.session_options.threaded = kHaveThreads;
+    model_.session_options.async_physics = kHaveThreads;
   }
 
   void open_first() {
@@ -368,6 +384,12 @@ class GuiApp {
       ++script_frame_;
       waited_ = 0;
     }
+    for (std::string& path : take_chosen_files()) {  // File > Open in the page: as a dropped file
+      InputEvent chosen;
+      chosen.kind = InputEvent::Kind::open;
+      chosen.text = std::move(path);
+      input_.live(chosen);
+    }
     for (const InputEvent& e : input_.begin_frame(script_frame_)) {
       if (e.kind == InputEvent::Kind::open) Panels::open(model_, e.text);
       else if (e.kind == InputEvent::Kind::shot) shots_.push_back(e.text);
@@ -385,7 +407,9 @@ class GuiApp {
   // that size and the style's sizes follow, before the frame begins.
   void update_ui_scale() {
     float sx = 1, sy = 1;
+#if GLFW_VERSION_MAJOR * 100 + GLFW_VERSION_MINOR >= 303  // emscripten's GLFW is 3.2: a page's canvas is in CSS pixels
     glfwGetWindowContentScale(window_, &sx, &sy);
+#endif
     const float monitor = options_.ui_scale > 0 ? options_.ui_scale : std::max(1.0f, std::max(sx, sy));
     if (!std::isfinite(model_.ui_scale_setting)) model_.ui_scale_setting = 1;
     model_.ui_scale_setting = std::clamp(model_.ui_scale_setting, 0.5f, 3.0f);
@@ -404,6 +428,9 @@ class GuiApp {
     ImGui::StyleColorsDark(&style);
     style.Colors[ImGuiCol_WindowBg].w = 1.0f;  // the panels are beside the view, not over it
     style.ScaleAllSizes(scale);
+    // The layout gives the status line and a folded column less than ImGui's default least window
+    // (32 px): at that size they reached past the window's edge.
+    style.WindowMinSize = ImVec2(4 * scale, 4 * scale);
     ImGui::GetStyle() = style;
   }
 
@@ -474,6 +501,9 @@ class GuiApp {
   }
 
   void update_session() {
+    const double now = glfwGetTime();  // without threads the frame loop steps the simulation
+    model_.session.run_owned_ticks(now - last_frame_time_);
+    last_frame_time_ = now;
     model_.session.refresh();
     hints_.update(model_, glfwGetTime());
     if (!model_.pending_settings.empty() && model_.session.snapshot()) {  // a session's hand settings
@@ -497,6 +527,14 @@ class GuiApp {
     ti.alt = input_.alt();
     ti.time = glfwGetTime();
     return ti;
+  }
+
+  // Two fingers on a touch screen (the page): turn the view as a drag of empty space does, and
+  // zoom as the wheel does (one wheel step zooms 1.1 times).
+  void take_touch_gesture_now() {
+    const TouchGesture g = take_touch_gesture();
+    if (g.dx != 0 || g.dy != 0) model_.view.drag(DragMode::kTrackball, g.dx, g.dy, model_.layout.view.h);
+    if (g.scale != 1) model_.view.scroll(std::log(g.scale) / std::log(1.1));
   }
 
   void draw_panels() {
@@ -608,6 +646,9 @@ class GuiApp {
   double wait_until_ = -1;  // wait-time: the simulated time the script waits for
   std::chrono::steady_clock::time_point wait_start_{};
   int exit_code_ = 0;
+  int frames_ = 0;
+  bool stopped_ = false;         // a signal ended the run (its autosave is written)
+  double last_frame_time_ = 0;   // glfwGetTime() of the last frame, for run_owned_ticks
 };
 
 // A window with an OpenGL 3.3 core context, or null (said on stderr).
@@ -659,18 +700,27 @@ int run_gui_app(const GuiOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout is not persisted: every start looks the same
   ImGui_ImplGlfw_InitForOpenGL(window, false);  // WindowInput installs the callbacks
+  // The ImGui backend's shaders: GLSL 3.30 on the desktop, GLSL ES 3.00 in the web page.
+#ifdef S4D_GLES
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+#else
   ImGui_ImplOpenGL3_Init("#version 330 core");
-  int exit_code = 0;
-  {
-    GuiApp app(window, options, std::move(script));
-    exit_code = app.run();
-  }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
-  return exit_code;
+#endif
+  // The window lives as long as its loop: until run_frames returns on the desktop, as long as
+  // the page in a browser (where run_frames returns at once and the browser calls the frames).
+  auto* app = new GuiApp(window, options, std::move(script));
+  auto exit_code = std::make_shared<int>(0);
+  run_frames([app] { return app->frame(); },
+             [app, window, exit_code] {
+               *exit_code = app->finish();
+               delete app;
+               ImGui_ImplOpenGL3_Shutdown();
+               ImGui_ImplGlfw_Shutdown();
+               ImGui::DestroyContext();
+               glfwDestroyWindow(window);
+               glfwTerminate();
+             });
+  return *exit_code;  // the page's: 0, its window still running
 }
 
 }  // namespace s4d

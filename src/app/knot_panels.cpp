@@ -16,6 +16,7 @@
 
 #include "app/knot_edit_step.hpp"
 #include "app/panels.hpp"
+#include "core/threads.hpp"
 #include "knots/curve_edits.hpp"
 #include "knots/knot_diagram.hpp"
 #include "view/view_crossings.hpp"
@@ -146,7 +147,7 @@ void KnotPanels::leave_button(GuiModel& model) {
 void KnotPanels::new_pair() {
   if (pair_.valid()) return;
   same_error_.clear();
-  pair_ = std::async(std::launch::async, [seed = rng_()] { return make_same_knot_exercise(seed); });
+  pair_ = run_in_background([seed = rng_()] { return make_same_knot_exercise(seed); });
 }
 
 void KnotPanels::start_unknot(GuiModel& model) {
@@ -154,7 +155,7 @@ void KnotPanels::start_unknot(GuiModel& model) {
     unknot_open_ = true;  // back to the one under way
   } else if (!unknot_make_.valid()) {
     unknot_open_ = true;
-    unknot_make_ = std::async(std::launch::async, [seed = rng_()] {
+    unknot_make_ = run_in_background([seed = rng_()] {
       const std::string name = pick_unknotting_exercise(seed);
       return std::pair{name, make_table_knot(name)};
     });
@@ -344,7 +345,7 @@ void KnotPanels::table_dialog(GuiModel& model) {
   if (button(busy ? "making..." : "Create") && !busy && filter_[0]) {
     making_ = filter_;
     const std::string spec = making_ + (mirror_ ? " mirror" : "");
-    made_ = std::async(std::launch::async, [spec] { return make_table_knot(spec); });
+    made_ = run_in_background([spec] { return make_table_knot(spec); });
   }
   ImGui::SameLine();
   ImGui::TextDisabled("(also: shadow4d knot make NAME --out K.curve)");
@@ -435,7 +436,7 @@ void KnotPanels::same_dialog(GuiModel& model) {
     same_error_.clear();
     user_says_same_ = says_same;
     const Curve<3> a = *curve_of(scene, selected_), b = *curve_of(scene, other_);
-    same_ = std::async(std::launch::async, [a, b] { return same_knot(a, b); });
+    same_ = run_in_background([a, b] { return same_knot(a, b); });
   };
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped("Look (turn the view, explore them), decide, then answer:");
@@ -517,15 +518,14 @@ void KnotPanels::unknot_dialog(GuiModel& model, const Frame<3>& view) {
     }
     if (!changed_at_ && key != unknot_key_ && !unknot_.valid()) {
       unknot_key_ = key;
-      unknot_ = std::async(std::launch::async,
-                           [c = *curve_of(model.scene(), o), view] { return unknotting_crossings(c, view); });
+      unknot_ = run_in_background([c = *curve_of(model.scene(), o), view] { return unknotting_crossings(c, view); });
     }
   }
   if (!unknot_open_) return;
   if (!model.dock.begin(Side::kRight, "Unknot it by one crossing change", &unknot_open_)) return;
   leave_button(model);
   if (button(unknot_make_.valid() ? "making a knot..." : "New knot") && !unknot_make_.valid())
-    unknot_make_ = std::async(std::launch::async, [seed = rng_()] {
+    unknot_make_ = run_in_background([seed = rng_()] {
       const std::string name = pick_unknotting_exercise(seed);
       return std::pair{name, make_table_knot(name)};
     });
@@ -594,6 +594,8 @@ void KnotPanels::dump(nlohmann::ordered_json& out) const {
   for (const auto& [label, r] : buttons_) buttons[label] = {r[0], r[1], r[2], r[3]};
   out["buttons"] = buttons;
   out["name_hidden"] = name_hidden_;
+  // The name as the panel shows it, with its "(proven)" state (the page's tests compare both).
+  if (shown_ && shown_->info) out["shown"] = {{"name", shown_->info->name}, {"proven", shown_->info->proven}};
   Json same = Json::object();
   if (pair_names_) same["pair"] = {pair_names_->a, pair_names_->b, pair_names_->same};
   if (same_answer_) {

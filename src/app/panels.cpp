@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "app/browser.hpp"
 #include "app/panel_settings.hpp"
 #include "app/tool_settings.hpp"
 #include "core/error.hpp"
@@ -203,7 +204,8 @@ void Panels::exercise_scene(GuiModel& model) {
 void Panels::draw(GuiModel& model, float fps) {
   menu_bar(model);
   exercise_scene(model);
-  if (std::exchange(model.open_file_dialog, false)) open_browser_.open(example_folder(model, &DataDirs::scenes));
+  if (std::exchange(model.open_file_dialog, false)) open_dialog(model);
+  if (std::exchange(model.save_session_dialog, false)) session_browser_.open(".");
   if (model.start_page) {  // the page is drawn by the window; only the menus and dialogs here
     dialogs(model);
     return;
@@ -232,11 +234,11 @@ void Panels::menu_bar(GuiModel& model) {
     }
     if (ImGui::MenuItem("Start page", nullptr, model.start_page)) model.start_page = true;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's examples, the exercises, recent files, the keys");
-    if (ImGui::MenuItem("Open...")) open_browser_.open(example_folder(model, &DataDirs::scenes));
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) open_dialog(model);
     if (ImGui::MenuItem("Open a scenario...")) open_browser_.open(example_folder(model, &DataDirs::scenarios));
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the paper's physical examples (scenarios/*.json), paused at their start");
     if (ImGui::MenuItem("Save scene...")) save_browser_.open(".");
-    if (ImGui::MenuItem("Save session...")) session_browser_.open(".");
+    if (ImGui::MenuItem("Save session...", "Ctrl+S")) session_browser_.open(".");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("everything as it is now: shapes, the simulation's state, pins, the view\n"
                         "(File > Open or shadow4d FILE.s4d takes it up again)");
@@ -372,6 +374,16 @@ void Panels::keys_panel(GuiModel& model) {
 }
 
 // [SECTION] Dialogs (open, save, screenshot, errors)
+// File > Open: in the web page the browser's own file picker (the chosen file comes back as a
+// dropped one does, app/browser.hpp); on the desktop the window's browser, at the example scenes.
+void Panels::open_dialog(GuiModel& model) {
+  if (choose_file_to_open(kOpenExtensions)) {
+    model.status = "choose a file in the browser's dialog";
+    return;
+  }
+  open_browser_.open(example_folder(model, &DataDirs::scenes));
+}
+
 void Panels::dialogs(GuiModel& model) {
   if (auto p = open_browser_.draw()) open(model, p->string());
   if (auto p = session_browser_.draw()) {
@@ -380,6 +392,7 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".s4d") path += ".s4d";
       write_session(model.session.save_state(), path);
       model.status = "saved the session " + path.string();
+      if (offer_download(path.string())) model.status += " (and downloaded)";
       remember(model, path.string());
     } catch (const std::exception& e) {
       model.error = e.what();
@@ -392,6 +405,7 @@ void Panels::dialogs(GuiModel& model) {
       if (path.extension() != ".json") path += ".json";
       save_scene(scene_to_save(model), path);
       model.status = "saved " + path.string();
+      if (offer_download(path.string())) model.status += " (and downloaded)";
     } catch (const std::exception& e) {
       model.error = e.what();
     }
@@ -400,6 +414,7 @@ void Panels::dialogs(GuiModel& model) {
     try {
       const auto path = p->extension() == ".txt" ? *p : std::filesystem::path(p->string() + ".txt");
       write_shape_file(model.knot.last_stroke_curve(), path);
+      offer_download(path.string());
       model.status = "saved " + path.string() + " (shadow4d knot sketch " + path.filename().string() + " --knot)";
     } catch (const std::exception& e) {
       model.error = e.what();

@@ -78,7 +78,8 @@ struct GuiModel {
   Rect slice_button;             // the status line's Slice button as drawn this frame (for dumps)
   bool start_page = false;       // the start page in the view's place (no file given; File > Start page)
   std::vector<std::pair<std::string, Rect>> start_cards;  // its cards and buttons, drawn this frame
-  bool open_file_dialog = false; // File > Open, asked from elsewhere (the start page)
+  bool open_file_dialog = false; // File > Open, asked from elsewhere (the start page, Ctrl+O)
+  bool save_session_dialog = false;  // File > Save session, asked by Ctrl+S
   std::optional<SessionFile> exercise_return;  // the scene an exercise left, to go back to
   bool leave_exercise = false;   // the exercise's "Leave" button
   // [hints] the scenario's markers (app/hint_markers.hpp)
@@ -154,6 +155,7 @@ class Panels {
   void knot_name(const SceneObject& obj);
   void generator_dialog(GuiModel& model);
   void dialogs(GuiModel& model);
+  void open_dialog(GuiModel& model);
 
   FileBrowser open_browser_;
   FileBrowser save_browser_;

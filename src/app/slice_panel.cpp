@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/panels.hpp"
+#include "core/threads.hpp"
 #include "render/curve_diagram.hpp"
 #include "render/scene_geometry.hpp"
 #include "shape/level_set.hpp"
@@ -259,7 +260,7 @@ void SlicePanel::movie_strip(GuiModel& model, const Camera& camera, double lo, d
     movie_named_hash_ = movie_hash_;
     std::vector<Curve<3>> curves;
     for (const SceneSlice& s : slices) curves.push_back(s.curve);
-    movie_job_ = std::async(std::launch::async, [curves = std::move(curves), levels = movie_levels_] {
+    movie_job_ = run_in_background([curves = std::move(curves), levels = movie_levels_] {
       NamingOptions fast;
       fast.fast = true;  // nine at once, while the surface may be moving: the live line's mode
       std::vector<SliceNaming> names;

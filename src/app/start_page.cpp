@@ -1,7 +1,6 @@
 #include "app/start_page.hpp"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/gl.hpp"
 #include <imgui.h>
 
 #include <algorithm>

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iostream>
+#include <imgui.h>
 #include <nlohmann/json.hpp>
 
 #include "app/dock.hpp"
@@ -26,6 +28,9 @@ void dump_simulation(Json& j, Session& s, const Camera& camera, const Rect& view
     const SceneStatus& st = snap->status;
     j["sim_time"] = st.sim_time;
     j["sim_steps"] = st.sim_steps;
+    // The Simulation panel's figures: simulated seconds per wall second over the last second.
+    j["real_time_ratio"] = s.rates().real_time_ratio;
+    j["steps_per_second"] = s.rates().steps_per_second;
     j["playing"] = st.playing;
     j["held_vertex"] = st.held_vertex;
     j["grab_mode"] = st.grab_mode;
@@ -122,6 +127,9 @@ void dump_view(Json& j, GuiModel& model, const Camera& camera, const Rect& view)
   Json controls = Json::object();
   for (const auto& [name, r] : model.view_controls) controls[name] = {r.x, r.y, r.right(), r.bottom()};
   j["view_controls"] = controls;
+  const Eigen::Quaterniond& q = model.view.trackball();
+  j["trackball"] = {q.w(), q.x(), q.y(), q.z()};
+  j["zoom"] = model.view.zoom();
   j["objects"] = model.scene().objects.size();
   if (model.intersections.computed) {
     Json pinch = Json::array();
@@ -169,6 +177,11 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
   // Where the window's parts are: the 3D view and every panel drawn this frame.
   auto rect = [](const Rect& r) { return Json{{"x", r.x}, {"y", r.y}, {"w", r.w}, {"h", r.h}}; };
   j["view"] = rect(view);
+  const ImVec2 display = ImGui::GetIO().DisplaySize;  // the window's size (the page's: the browser's)
+  j["window"] = {{"w", display.x}, {"h", display.y}};
+  if (model.audio)  // cues started and samples mixed: the page's Web Audio, the desktop's SDL2
+    j["audio"] = {{"status", model.audio->status()}, {"available", model.audio->available()},
+                  {"cues_started", model.audio->cues_started()}, {"frames_rendered", model.audio->frames_rendered()}};
   Json panels = Json::array();
   for (const auto& [name, r] : visible_windows()) {
     Json p = rect(r);
@@ -211,6 +224,10 @@ void dump_state(GuiModel& model, const KnotPanels& knots, const SlicePanel& slic
     j["restore_offer"] = {{"opened", model.pending_restore->opened}, {"saved_at", model.pending_restore->saved_at},
                           {"closed_by", model.pending_restore->closed_by}};
   j["history"] = model.session.history().done_labels();
+  if (path == "-") {  // one line on the standard output: the web page's console, where a test reads it
+    std::cout << "dump " << j.dump() << std::endl;
+    return;
+  }
   std::ofstream out(path);
   out << j.dump(1) << "\n";
   if (!out) model.error = "cannot write " + path;

@@ -15,6 +15,12 @@
 
 namespace s4d {
 
+#ifdef __EMSCRIPTEN__
+constexpr bool kPageBuild = true;
+#else
+constexpr bool kPageBuild = false;
+#endif
+
 namespace {
 
 const std::map<std::string, int>& key_names() {
@@ -79,6 +85,16 @@ void on_char(GLFWwindow* w, unsigned int c) {
   InputEvent e;
   e.kind = InputEvent::Kind::chr;
   e.codepoint = c;
+  self(w)->live(e);
+}
+
+// A file dropped on the window opens as File > Open would (in the web page: the user's own file,
+// which the browser hands over into the page's memory; the first of several).
+void on_drop(GLFWwindow* w, int count, const char** paths) {
+  if (count < 1 || !paths[0]) return;
+  InputEvent e;
+  e.kind = InputEvent::Kind::open;
+  e.text = paths[0];
   self(w)->live(e);
 }
 
@@ -216,6 +232,7 @@ void WindowInput::attach(GLFWwindow* window) {
   glfwSetCharCallback(window, on_char);
   glfwSetWindowFocusCallback(window, on_focus);
   glfwSetCursorEnterCallback(window, on_enter);
+  glfwSetDropCallback(window, on_drop);
   double x = 0, y = 0;
   glfwGetCursorPos(window, &x, &y);
   cursor_ = last_cursor_ = Vec2(x, y);
@@ -260,9 +277,15 @@ std::vector<InputEvent> WindowInput::begin_frame(int frame) {
   std::vector<InputEvent> events;
   events.swap(live_);
   if (!script_.empty()) had_script_ = true;
-  // A scripted run ignores the real pointer (Xvfb's may sit anywhere) but keeps typed text.
-  if (had_script_)
-    std::erase_if(events, [](const InputEvent& e) { return e.kind != InputEvent::Kind::chr; });
+  // A scripted run on the desktop ignores the real pointer (Xvfb's may sit anywhere) but keeps the
+  // keys, typed text and files dropped or chosen (a page's test presses Ctrl+O and picks a file).
+  // The page's pointer moves only when someone moves it: its tests touch the screen through it.
+  if (had_script_ && !kPageBuild)
+    std::erase_if(events, [](const InputEvent& e) {
+      using K = InputEvent::Kind;
+      return e.kind == K::move || e.kind == K::move_by || e.kind == K::press || e.kind == K::release ||
+             e.kind == K::scroll;
+    });
   while (!script_.empty() && script_.front().frame <= frame) {
     events.push_back(script_.front());
     script_.pop_front();

@@ -22,6 +22,8 @@
 //   19 open SPEC           open a scene, scenario, mesh, curve or generator call
 //   20 shot FILE.png       save the window (panels included) after this frame
 //   21 dump FILE.json      write the session's state (simulation, checks, vertex positions)
+//   21 dump -              the same as one line "dump {...}" on the standard output (the web
+//                          page's console)
 //   22 quit
 //   23 wait-time T         the script's frames stop counting until the simulation's time is T s
 //   23 wait-sim S          ... until S s more of simulated time have passed

@@ -37,6 +37,8 @@ void window_keys(GuiModel& model, const Routing& r, const WindowInput& in, const
     }
   }
   if (in.ctrl() && in.key_pressed(GLFW_KEY_Q)) model.quit = true;
+  if (in.ctrl() && in.key_pressed(GLFW_KEY_O)) model.open_file_dialog = true;
+  if (in.ctrl() && in.key_pressed(GLFW_KEY_S)) model.save_session_dialog = true;
   if (in.ctrl() && in.key_pressed(GLFW_KEY_Z) && !r.tool_drag) Panels::undo_or_redo(model, in.shift());
   if (in.ctrl() && in.key_pressed(GLFW_KEY_Y) && !r.tool_drag) Panels::undo_or_redo(model, true);
   if (in.key_pressed(GLFW_KEY_F12)) model.want_screenshot = true;

@@ -1,6 +1,8 @@
 // The SDL2 back end of AudioPlayer. The callback runs on SDL's audio thread: it takes the pending cues
 // with try_lock (it never waits for the UI), reads volume/mute/depth from atomics and mixes. Built
-// without SDL2 the player is a silent stub with a status sentence.
+// without SDL2 the player is a silent stub with a status sentence. In the web page (emscripten,
+// whose SDL2 is a port it cannot download here) the same mixing feeds Web Audio: a script
+// processor asks for each block on the page's thread, between frames.
 #include "audio/audio_player.hpp"
 
 #include <algorithm>
@@ -9,6 +11,9 @@
 #include <cmath>
 #include <mutex>
 
+#if defined(__EMSCRIPTEN__)
+#include <emscripten/emscripten.h>
+#endif
 #if defined(S4D_HAVE_SDL2)
 #include <SDL.h>
 #if defined(S4D_HAVE_ALSA)
@@ -37,12 +42,14 @@ struct AudioPlayer::Impl {
 #if defined(S4D_HAVE_SDL2)
   SDL_AudioDeviceID device = 0;
   bool subsystem = false;
-  CueMixer mixer{kAudioSampleRate};  // audio thread only once the device runs
 
   static void callback(void* user, Uint8* stream, int len) {
     auto* self = static_cast<Impl*>(user);
     self->fill(reinterpret_cast<float*>(stream), static_cast<std::size_t>(len) / sizeof(float));
   }
+#endif
+#if defined(S4D_HAVE_SDL2) || defined(__EMSCRIPTEN__)
+  CueMixer mixer{kAudioSampleRate};  // audio thread only once the device runs
   void fill(float* out, std::size_t n) {
     if (pending_mutex.try_lock()) {
       for (int i = 0; i < pending_count; ++i) mixer.start(pending[i].kind, pending[i].gain);
@@ -127,6 +134,39 @@ AudioPlayer::AudioPlayer(const AudioPlayerOptions& options) noexcept {
   } catch (...) {
     m.status = "no sound: the audio device could not be set up; cues are silent";
   }
+#elif defined(__EMSCRIPTEN__)
+  (void)options;
+  Impl& m = *impl_;
+  // clang-format off
+  const int rate = EM_ASM_INT({
+    const Context = window.AudioContext || window.webkitAudioContext;
+    if (!Context) return 0;
+    const context = new Context();
+    const node = context.createScriptProcessor(1024, 0, 1);
+    const block = _malloc(1024 * 4);
+    node.onaudioprocess = function(e) {
+      const out = e.outputBuffer.getChannelData(0);
+      _s4d_audio_fill($0, block, out.length);
+      out.set(HEAPF32.subarray(block >> 2, (block >> 2) + out.length));
+    };
+    node.connect(context.destination);
+    // Browsers start sound only after a user's gesture: the first click, key or touch resumes it
+    // (a touch counts as one when the finger lifts).
+    const resume = function() { if (context.state !== "running") context.resume(); };
+    for (const type of ["pointerdown", "pointerup", "keydown", "touchend"]) window.addEventListener(type, resume, true);
+    Module.s4dAudio = new Object();
+    Module.s4dAudio.context = context;
+    Module.s4dAudio.node = node;
+    return context.sampleRate;
+  }, &m);
+  // clang-format on
+  if (rate <= 0) {
+    m.status = "no sound: this browser has no Web Audio; cues are silent";
+    return;
+  }
+  m.mixer = CueMixer(rate);  // before the first block: Web Audio calls back between frames only
+  m.open = true;
+  m.status = "sound through Web Audio (" + std::to_string(rate) + " Hz; it starts at the first click, key or touch)";
 #else
   (void)options;
   impl_->status = "no sound: this build has no SDL2 (libsdl2-dev was not found); cues are silent";
@@ -134,6 +174,16 @@ AudioPlayer::AudioPlayer(const AudioPlayerOptions& options) noexcept {
 }
 
 AudioPlayer::~AudioPlayer() {
+#if defined(__EMSCRIPTEN__)
+  // clang-format off
+  EM_ASM({
+    if (!Module.s4dAudio) return;
+    Module.s4dAudio.node.onaudioprocess = null;  // it would call into this player's memory
+    Module.s4dAudio.context.close();
+    Module.s4dAudio = null;
+  });
+  // clang-format on
+#endif
 #if defined(S4D_HAVE_SDL2)
   if (!impl_) return;
   if (impl_->device != 0) SDL_CloseAudioDevice(impl_->device);  // joins the audio thread
@@ -176,3 +226,10 @@ std::uint64_t AudioPlayer::cues_dropped() const noexcept { return impl_ ? impl_-
 std::uint64_t AudioPlayer::frames_rendered() const noexcept { return impl_ ? impl_->frames.load() : 0; }
 
 }  // namespace s4d
+
+#if defined(__EMSCRIPTEN__)
+// Web Audio's block callback (the constructor's script processor): n mixed samples into out.
+extern "C" EMSCRIPTEN_KEEPALIVE void s4d_audio_fill(s4d::AudioPlayer::Impl* impl, float* out, int n) {
+  if (impl && out && n > 0) impl->fill(out, static_cast<std::size_t>(n));
+}
+#endif

@@ -254,6 +254,7 @@ void HapticLoop::publish() {
 }
 
 void HapticLoop::thread_main() {
+#ifdef __linux__  // real-time scheduling and pinning are Linux's (the web page never starts the thread)
   if (config_.realtime_priority) {
     sched_param sp{};
     sp.sched_priority = std::min(80, sched_get_priority_max(SCHED_FIFO));
@@ -265,6 +266,7 @@ void HapticLoop::thread_main() {
     CPU_SET(config_.cpu, &set);
     pthread_setaffinity_np(pthread_self(), sizeof set, &set);
   }
+#endif
   const auto period = static_cast<std::int64_t>(std::llround(1e9 / config_.rate_hz));
   const std::uint64_t summary_every =
       std::max<std::uint64_t>(1, static_cast<std::uint64_t>(config_.rate_hz / 10));

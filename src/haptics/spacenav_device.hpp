@@ -36,7 +36,7 @@ class SpacenavDevice final : public Device {
   std::array<int, 6> axes_{};
   Vec3 position_ = Vec3::Zero();
   std::uint32_t buttons_ = 0;
-  bool open_ = false;
+  [[maybe_unused]] bool open_ = false;  // unused in a build without libspnav (the web page)
 };
 
 }  // namespace s4d

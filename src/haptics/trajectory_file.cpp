@@ -16,6 +16,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/chars.hpp"
 #include "core/error.hpp"
 
 namespace s4d {
@@ -25,7 +26,7 @@ constexpr const char* kMagic = "# shadow4d haptic trajectory v1";
 
 void append_number(std::string& out, double v) {
   char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);  // shortest exact round-trip
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);  // shortest exact round-trip
   out.push_back(' ');
   out.append(buf, r.ptr);
 }
@@ -59,7 +60,7 @@ struct LineReader {
 
   double number(std::string_view w) const {
     double v = 0;
-    const auto r = std::from_chars(w.data(), w.data() + w.size(), v);
+    const auto r = double_from_chars(w.data(), w.data() + w.size(), v);
     if (r.ec != std::errc() || r.ptr != w.data() + w.size()) fail("not a number: '" + std::string(w) + "'");
     if (!std::isfinite(v)) fail("non-finite value: '" + std::string(w) + "'");
     return v;

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/data_paths.hpp"
+#include "core/chars.hpp"
 #include "core/error.hpp"
 #include "io/object_file.hpp"
 #include "io/scene.hpp"
@@ -56,7 +57,7 @@ std::optional<Vec4> offset_suffix(const std::string& spec, std::string& rest) {
     const std::size_t comma = tail.find(',');
     const std::string_view item = tail.substr(0, comma);
     double x = 0;
-    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), x);
+    const auto [ptr, ec] = double_from_chars(item.data(), item.data() + item.size(), x);
     if (item.empty() || ec != std::errc() || ptr != item.data() + item.size()) return std::nullopt;
     v.push_back(x);
     tail = comma == std::string_view::npos ? std::string_view() : tail.substr(comma + 1);

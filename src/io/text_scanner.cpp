@@ -11,6 +11,7 @@
 #include <limits>
 #include <system_error>
 
+#include "core/chars.hpp"
 #include "core/error.hpp"
 
 namespace s4d {
@@ -59,13 +60,13 @@ void write_text_file(const std::filesystem::path& path, std::string_view text) {
 
 std::string format_double(double v) {
   char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 
 void append_double(std::string& out, double v) {
   char buf[40];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  const auto r = double_to_chars(buf, buf + sizeof buf, v);
   out.append(buf, r.ptr);
 }
 
@@ -101,7 +102,7 @@ bool parse_double(std::string_view token, double& out) {
   const char* first = token.data();
   const char* last = first + token.size();
   double v = 0;
-  const auto r = std::from_chars(first, last, v);
+  const auto r = double_from_chars(first, last, v);
   if (r.ec == std::errc::result_out_of_range && token.size() < 64) {
     // from_chars reports underflow (1e-320) and overflow (1e999) alike; strtod tells them apart.
     char buf[64];

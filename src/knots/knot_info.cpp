@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "core/error.hpp"
+#include "core/threads.hpp"
 
 namespace s4d {
 
@@ -43,8 +44,9 @@ KnotInfo knot_info(const Curve<3>& curve, const std::optional<Frame<3>>& view, c
 
 // [SECTION] worker
 
+// Without threads (the web page) there is no worker: submit() names the curve in place.
 KnotInfoWorker::KnotInfoWorker(KnotInfoOptions options) : options_(options) {
-  thread_ = std::thread([this] { run(); });
+  if constexpr (kHaveThreads) thread_ = std::thread([this] { run(); });
 }
 
 KnotInfoWorker::~KnotInfoWorker() {
@@ -53,7 +55,7 @@ KnotInfoWorker::~KnotInfoWorker() {
     stop_ = true;
   }
   changed_.notify_all();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
 }
 
 std::uint64_t KnotInfoWorker::submit(Curve<3> curve, std::optional<Frame<3>> view) {
@@ -63,6 +65,12 @@ std::uint64_t KnotInfoWorker::submit(Curve<3> curve, std::optional<Frame<3>> vie
     n = ++submitted_;
     pending_.emplace(std::move(curve), view);
     pending_request_ = n;
+  }
+  if (!thread_.joinable()) {
+    auto job = std::move(*pending_);
+    pending_.reset();
+    work(std::move(job), n);
+    return n;
   }
   changed_.notify_all();
   return n;
@@ -91,19 +99,23 @@ void KnotInfoWorker::run() {
       pending_.reset();
       request = pending_request_;
     }
-    auto result = std::make_shared<Result>();
-    result->request = request;
-    try {
-      result->info = knot_info(job.first, job.second, options_);
-    } catch (const std::exception& e) {  // an invalid curve mid-edit: said, not thrown
-      result->error = e.what();
-    }
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      latest_ = std::move(result);
-    }
-    changed_.notify_all();
+    work(std::move(job), request);
   }
+}
+
+void KnotInfoWorker::work(std::pair<Curve<3>, std::optional<Frame<3>>> job, std::uint64_t request) {
+  auto result = std::make_shared<Result>();
+  result->request = request;
+  try {
+    result->info = knot_info(job.first, job.second, options_);
+  } catch (const std::exception& e) {  // an invalid curve mid-edit: said, not thrown
+    result->error = e.what();
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    latest_ = std::move(result);
+  }
+  changed_.notify_all();
 }
 
 }  // namespace s4d

@@ -85,6 +85,7 @@ class KnotInfoWorker {
 
  private:
   void run();
+  void work(std::pair<Curve<3>, std::optional<Frame<3>>> job, std::uint64_t request);
 
   KnotInfoOptions options_;
   mutable std::mutex mutex_;

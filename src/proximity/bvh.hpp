@@ -248,8 +248,8 @@ class Bvh {
 
 template <int D>
 inline unsigned Bvh<D>::leaf_rows_near(int la, int lb, float r2) const {
-  const unsigned lanes = (1u << leaves_[la].count) - 1;
 #if S4D_X86
+  const unsigned lanes = (1u << leaves_[la].count) - 1;
   if (cpu::kHasAvx) return leaf_rows_near_avx(la, lb, r2) & lanes;
 #endif
   unsigned rows = 0;

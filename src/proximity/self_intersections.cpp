@@ -2,6 +2,7 @@
 #include "proximity/self_intersections.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <unordered_map>
 
@@ -29,9 +30,9 @@ struct CellKey {
 template <int D>
 struct CellHash {
   std::size_t operator()(const CellKey<D>& k) const {
-    std::size_t h = 1469598103934665603ull;
-    for (long long x : k.c) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
-    return h;
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a in 64 bits, whatever size_t is (wasm32's is 32)
+    for (long long x : k.c) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
   }
 };
 

@@ -3,8 +3,7 @@
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/gl.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -57,7 +56,7 @@ EGLDisplay process_display() {
       auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
           eglGetProcAddress("eglGetPlatformDisplayEXT"));
       if (get_platform_display)
-        d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        d = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, nullptr, nullptr);  // EGL_DEFAULT_DISPLAY
     }
     if (d == EGL_NO_DISPLAY) d = eglGetDisplay(EGL_DEFAULT_DISPLAY);
     if (d == EGL_NO_DISPLAY) return d;

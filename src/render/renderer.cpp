@@ -9,8 +9,7 @@
 // [SECTION] offscreen
 #include "render/renderer.hpp"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/gl.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -123,6 +122,7 @@ struct GpuMesh {
   ~GpuMesh() {
     glDeleteBuffers(1, &vbo);
     glDeleteBuffers(1, &ebo);
+    if (edge_ebo) glDeleteBuffers(1, &edge_ebo);
     glDeleteVertexArrays(1, &vao);
   }
   GpuMesh(const GpuMesh&) = delete;
@@ -170,6 +170,29 @@ struct GpuMesh {
     glBindVertexArray(vao);
     glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_INT, nullptr);
   }
+
+  // The triangles' edges as lines: the wireframe where OpenGL ES (WebGL) has no glPolygonMode.
+  void draw_edges() {
+    if (index_count == 0) return;
+    glBindVertexArray(vao);
+    if (!edge_ebo) glGenBuffers(1, &edge_ebo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, edge_ebo);
+    if (edges_of != indices) {
+      edges.clear();
+      for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+        for (int k = 0; k < 3; ++k) {
+          edges.push_back(indices[t + static_cast<std::size_t>(k)]);
+          edges.push_back(indices[t + static_cast<std::size_t>((k + 1) % 3)]);
+        }
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(edges.size() * sizeof(std::uint32_t)),
+                   edges.data(), GL_STATIC_DRAW);
+      edges_of = indices;
+    }
+    glDrawElements(GL_LINES, static_cast<GLsizei>(edges.size()), GL_UNSIGNED_INT, nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo);  // the VAO's triangles again
+  }
+  GLuint edge_ebo = 0;
+  std::vector<std::uint32_t> edges, edges_of;  // the lines, and the triangles they were made from
 };
 
 // The triangles of `m` from the farthest from the eye to the nearest (by their centres' eye
@@ -276,7 +299,9 @@ void Renderer::draw(const Scene& scene, int width, int height, int x, int y) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
+#ifndef S4D_GLES
   glEnable(GL_MULTISAMPLE);
+#endif
 
   r.program.use();
   const Eigen::Matrix4f view = to_float(view_d);
@@ -290,7 +315,9 @@ void Renderer::draw(const Scene& scene, int width, int height, int x, int y) {
   // back so the edges drawn at the same depth win the depth test.
   const bool wire = scene.view.wireframe;
   glUniform1i(r.u_mode, scene.view.shadow ? 1 : 0);
+#ifndef S4D_GLES
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+#endif
   if (wire) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
@@ -352,11 +379,16 @@ void Renderer::draw(const Scene& scene, int width, int height, int x, int y) {
   // Pass 3: triangle edges of surfaces in a dark colour (tubes would only show their facets).
   if (wire) {
     glUniform1i(r.u_mode, 2);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glDepthFunc(GL_LEQUAL);
+#ifdef S4D_GLES
+    for (const auto& m : r.meshes)
+      if (m->surface) m->draw_edges();
+#else
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     for (const auto& m : r.meshes)
       if (m->surface) m->draw();
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+#endif
     glDepthFunc(GL_LESS);
   }
   glBindVertexArray(0);

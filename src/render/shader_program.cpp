@@ -1,8 +1,7 @@
 // GLSL compile and link with the driver's log in the error (see shader_program.hpp).
 #include "render/shader_program.hpp"
 
-#include <GL/gl.h>
-#include <GL/glext.h>
+#include "render/gl.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -13,7 +12,21 @@ namespace s4d {
 
 namespace {
 
-GLuint compile(const std::string& name, GLenum type, const char* source) {
+// The shaders are written once in GLSL 3.30 core; OpenGL ES 3.0 (WebGL2) takes them as GLSL ES
+// 3.00 with the precisions ES asks for, the rest of the language being the same for our shaders.
+std::string for_this_gl(const char* source) {
+  std::string text = source;
+#ifdef S4D_GLES
+  const std::string desktop = "#version 330 core";
+  if (text.rfind(desktop, 0) == 0)
+    text = "#version 300 es\nprecision highp float;\nprecision highp int;" + text.substr(desktop.size());
+#endif
+  return text;
+}
+
+GLuint compile(const std::string& name, GLenum type, const char* glsl) {
+  const std::string text = for_this_gl(glsl);
+  const char* source = text.c_str();
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
   glCompileShader(s);

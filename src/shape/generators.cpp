@@ -8,6 +8,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "core/chars.hpp"
 #include "core/error.hpp"
 #include "shape/chain.hpp"
 #include "shape/knot_curves.hpp"
@@ -229,7 +230,7 @@ GeneratorCall parse_generator_call(std::string_view text) {
     const std::string_view val = trim(item.substr(eq + 1));
     if (key.empty()) throw Error("'" + std::string(text) + "': a parameter has no name");
     double value = 0;
-    const auto [ptr, ec] = std::from_chars(val.data(), val.data() + val.size(), value);
+    const auto [ptr, ec] = double_from_chars(val.data(), val.data() + val.size(), value);
     if (val.empty() || ec != std::errc() || ptr != val.data() + val.size())
       throw Error("'" + std::string(text) + "': the value of " + key + " ('" + std::string(val) +
                   "') is not a number");

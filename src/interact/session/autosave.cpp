@@ -8,6 +8,7 @@
 #include <ctime>
 #include <vector>
 
+#include "core/threads.hpp"
 #include "interact/session/session.hpp"
 #include "io/atomic_file.hpp"
 
@@ -175,6 +176,7 @@ void Autosaver::write(SessionFile f) {
     write_session(f, path_, options_.keep, &texts_);
     error_.clear();
     ++saves_;
+    if (written_) written_();
   } catch (const std::exception& e) {
     error_ = e.what();
   }
@@ -186,7 +188,8 @@ bool Autosaver::tick(const Session& session, std::chrono::steady_clock::time_poi
   SessionFile f = session.save_state();
   f.clean_exit = false;
   if (worker_.joinable()) worker_.join();  // the last one is long done after an interval
-  worker_ = std::thread([this, f = std::move(f)]() mutable { write(std::move(f)); });
+  if constexpr (kHaveThreads) worker_ = std::thread([this, f = std::move(f)]() mutable { write(std::move(f)); });
+  else write(std::move(f));  // no threads (the web page): a page's session is small, and one write is quick
   return true;
 }
 

@@ -8,10 +8,12 @@
 #pragma once
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "io/file_lock.hpp"
 #include "io/session_file.hpp"
@@ -61,6 +63,9 @@ class Autosaver {
   bool save_now(const Session& session, bool clean_exit, const std::string& closed_by = {});
   // This run's own autosave file (its slot).
   const std::filesystem::path& path() const { return path_; }
+  // Called after each successful write, on the writing thread (set before the first tick): the
+  // web page copies its autosave folder to the browser's storage there (IndexedDB).
+  void set_written(std::function<void()> written) { written_ = std::move(written); }
   double interval() const { return options_.interval; }
   std::string last_error() const;
   int saves() const;
@@ -88,6 +93,7 @@ class Autosaver {
   std::string error_;
   int saves_ = 0;
   std::thread worker_;
+  std::function<void()> written_;
 };
 
 }  // namespace s4d

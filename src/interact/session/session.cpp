@@ -12,6 +12,7 @@
 #include "interact/live/curve_explorer.hpp"
 #include "interact/live/curve_sketch_scene.hpp"
 #include "interact/live/surface_explorer.hpp"
+#include "knots/knot_table.hpp"
 #include "scenario/world_builder.hpp"
 
 namespace s4d {
@@ -65,6 +66,16 @@ CurveSketch* Session::curve_sketch() { return sketch_host_ ? &sketch_host_->curv
 Document load_document(const std::string& spec) {
   Document d;
   d.spec = spec;
+  // "knot:NAME": a knot or link of the table drawn as `knot make NAME` draws it, so that a page
+  // address (index.html?open=knot:10_123) or `shadow4d open` can start from any table entry.
+  if (spec.starts_with(kTableKnotPrefix)) {
+    const std::string name = spec.substr(kTableKnotPrefix.size());
+    SceneObject o;
+    o.name = name;
+    o.shape = make_table_knot(name);
+    d.scene.objects.push_back(std::move(o));
+    return d;
+  }
   d.scene = load_scene_or_object(spec);
   if (is_scenario(d.scene)) d.scenario = scenario_of_scene(d.scene, spec);
   return d;
@@ -522,6 +533,16 @@ void Session::shapes_edited() {
 }
 
 MonitorResult Session::checks() const { return monitor_ ? monitor_->latest() : MonitorResult{}; }
+
+void Session::run_owned_ticks(double seconds) {
+  if (!loop_ || options_.threaded || loop_->running() || !(seconds > 0)) return;
+  constexpr double kMostSeconds = 0.1;
+  const double rate = loop_->config().rate_hz;
+  owed_ticks_ = std::min(owed_ticks_ + seconds * rate, kMostSeconds * rate);
+  const auto n = static_cast<std::uint64_t>(owed_ticks_);
+  owed_ticks_ -= static_cast<double>(n);
+  if (n > 0) loop_->run_ticks(n);
+}
 
 bool Session::send(const live::Request& request) { return loop_ && loop_->send(live::command(request)); }
 

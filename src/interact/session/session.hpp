@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "haptics/haptic_loop.hpp"
 #include "interact/session/history.hpp"
@@ -38,7 +39,9 @@ struct Document {
   std::optional<Scenario> scenario;
   std::string spec;  // what was opened
 };
+// "knot:NAME" opens a knot or link of the table (3_1, 10_123, L6a4, T(2,5), m3_1) as a curve.
 // Throws s4d::Error / ParseError with the reason; nothing is changed then.
+inline constexpr std::string_view kTableKnotPrefix = "knot:";
 Document load_document(const std::string& spec);
 
 // Timings the window shows, measured over the last second of snapshots.
@@ -88,6 +91,11 @@ class Session {
   // UI thread, once a frame: reads the loop's newest snapshot, copies its positions into the
   // scene's objects, updates the rates and hands the state to the monitor.
   void refresh();
+  // Without the loop's thread (options.threaded false, as in the web page, which has no threads):
+  // runs the loop's ticks for `seconds` of wall time on the calling thread, the owner's frame loop.
+  // At most 0.1 s of ticks a call: a page slower than real time falls behind it, it never stalls
+  // catching up. Nothing when the loop has its thread.
+  void run_owned_ticks(double seconds);
   // The snapshot of the last refresh (nullptr when not simulating).
   const HapticSnapshot* snapshot() const { return snapshot_; }
   SimulationRates rates() const { return rates_; }
@@ -189,6 +197,7 @@ class Session {
   std::int64_t rate_steps_ = 0;
   std::uint64_t rate_revision_ = 0;  // the state revision the rates were measured in
   std::chrono::steady_clock::time_point last_submit_;
+  double owed_ticks_ = 0;  // run_owned_ticks: the fraction of a tick carried to the next call
   DeviceMapping mapping_;
   History history_;
   LiveHandover* handover_ = nullptr;  // the live simulation, owned by the loop

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 
+#include "core/threads.hpp"
 #include "proximity/mesh_proximity.hpp"
 #include "proximity/self_proximity.hpp"
 #include "scenario/script_driver.hpp"
@@ -54,7 +55,7 @@ SessionMonitor::SessionMonitor(std::vector<Triangle> triangles, MonitorCurves cu
       count_(std::move(count)),
       initial_(std::move(initial)) {
   if (scenario) scenario_ = *scenario;
-  thread_ = std::thread([this] { run(); });
+  if constexpr (kHaveThreads) thread_ = std::thread([this] { run(); });
 }
 
 SessionMonitor::~SessionMonitor() {
@@ -63,7 +64,7 @@ SessionMonitor::~SessionMonitor() {
     stop_ = true;
   }
   wake_.notify_one();
-  thread_.join();
+  if (thread_.joinable()) thread_.join();
 }
 
 void SessionMonitor::submit(std::span<const double> points, double sim_time) {
@@ -74,6 +75,10 @@ void SessionMonitor::submit(std::span<const double> points, double sim_time) {
     pending_time_ = sim_time;
     has_pending_ = true;
   }
+  if (!thread_.joinable()) {  // no threads (the web page): the check runs now, on the caller's
+    check_pending();
+    return;
+  }
   wake_.notify_one();
 }
 
@@ -83,18 +88,27 @@ MonitorResult SessionMonitor::latest() const {
 }
 
 void SessionMonitor::run() {
-  std::vector<double> points;
   for (;;) {
-    double t = 0;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stop_ || has_pending_; });
       if (stop_) return;
-      points.swap(pending_);
+    }
+    check_pending();
+  }
+}
+
+void SessionMonitor::check_pending() {
+  {
+    double t = 0;
+    {
+      std::lock_guard lock(mutex_);
+      points_.swap(pending_);
       t = pending_time_;
       has_pending_ = false;
       busy_ = true;
     }
+    const std::vector<double>& points = points_;
     const auto t0 = std::chrono::steady_clock::now();
     MonitorResult r;
     r.valid = true;

@@ -55,6 +55,7 @@ class SessionMonitor {
 
  private:
   void run();
+  void check_pending();  // checks the state submitted last (the worker, or submit without threads)
 
   const std::vector<Triangle> triangles_;
   const MonitorCurves curves_;
@@ -65,6 +66,7 @@ class SessionMonitor {
   std::vector<Vec4> initial_;
   std::unique_ptr<VerdictJudge> judge_;  // worker thread only
   double judged_time_ = -1;              // worker thread only
+  std::vector<double> points_;           // worker thread only: the state being checked
 
   mutable std::mutex mutex_;
   std::condition_variable wake_;

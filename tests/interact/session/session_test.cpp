@@ -153,5 +153,16 @@ TEST(Session, DeletingAKnotKeepsTheOtherKnotsState) {
   EXPECT_NEAR(after.points[3 * 3], before[static_cast<std::size_t>(kept0 + 3) * 3], 1e-6) << "where it was";
 }
 
+// "knot:NAME" opens a table entry as the curve `knot make NAME` draws; a wrong name is an error.
+TEST(LoadDocument, KnotColonOpensATableKnotOrLink) {
+  const Document d = load_document("knot:L6a4");
+  ASSERT_EQ(d.scene.objects.size(), 1u);
+  EXPECT_EQ(d.scene.objects[0].name, "L6a4");
+  const auto* curve = std::get_if<Curve<3>>(&d.scene.objects[0].shape);
+  ASSERT_NE(curve, nullptr);
+  EXPECT_EQ(curve->components.size(), 3u) << "the Borromean rings";
+  EXPECT_THROW(load_document("knot:not-a-knot"), Error);
+}
+
 }  // namespace
 }  // namespace s4d
