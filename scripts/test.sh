@@ -41,7 +41,9 @@ fi
 # instrumented in their smaller siblings, which stay in:
 # - brute-force sweeps: ClosestPoints.RandomAndDegenerateConfigurationsInR2/3/4 (75-135 each), the
 #   spun trefoil's self-intersection check at its two finest resolutions, TrefoilRibbon.TooWide...,
-#   World.AdversarialRun..., MeshProximity.CoherentQueriesEqualFresh... (156);
+#   World.AdversarialRun..., MeshProximity.CoherentQueriesEqualFresh... (156), ContactCache.ADragged
+#   UpperLayer... (a drag checked against brute force every tenth step; the cache's other
+#   brute-force test stays);
 # - whole-table knot runs: KnotTable.TableKnotsAreNamedBack... (588), SameKnotExercise.EveryPair...
 #   (804), UnknottingExercise.EveryKnot... (104), KnotNaming.IdentifyInfoAndTheTableDiagram... and
 #   TheConwayAndKinoshita..., the own engine's three comparisons with Regina, KnotInfo.Twelve... (85)
