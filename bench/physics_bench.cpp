@@ -21,6 +21,7 @@
 #include "shape/grid_mesh.hpp"
 
 #include "cloth_scene.hpp"
+#include "spun_trefoil_scene.hpp"
 
 namespace s4d {
 namespace {
@@ -105,19 +106,7 @@ BENCHMARK(BM_Cloth4DFoldedContactStep)
     ->Unit(benchmark::kMillisecond);
 
 void BM_SpunTrefoilStep(benchmark::State& state) {
-  Scene scene;
-  SceneObject o;
-  o.name = "sphere";
-  o.generator = GeneratorCall{"spun-trefoil", {{"n", 64}, {"m", 12}}};
-  o.shape = generate("spun-trefoil", o.generator->params);
-  scene.objects.push_back(std::move(o));
-  scene.physics.thickness = 0.03;  // m
-  scene.physics.stiffness = 300;   // N/m
-  World<4> w = build_world<4>(scene).world;
-  const int last = w.vertex_count() - 1;
-  w.set_external_force(0, Vec4(-2, 0, 0, 0));
-  w.set_external_force(last, Vec4(2, 0, 0, 0));
-  for (int i = 0; i < 500; ++i) w.step();  // pulled, mid-deformation
+  World<4> w = bench::pulled_spun_trefoil();
   for (auto _ : state) w.step();  // fixed count below: later steps are other states
   state.counters["vertices"] = w.vertex_count();
   state.counters["contacts"] = w.data().last_contacts;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cloth_scene.hpp"
+#include "spun_trefoil_scene.hpp"
 #include "knots/knot_naming.hpp"
 #include "knots/knot_table.hpp"
 #include "knots/resample.hpp"
@@ -32,19 +33,7 @@ void report(const char* name, double total_ms, int runs, const std::string& note
 
 // As BM_SpunTrefoilStep: the scenario's sphere (n=64, m=12) pulled apart, steps 501-1500.
 void spun_trefoil() {
-  Scene scene;
-  SceneObject o;
-  o.name = "sphere";
-  o.generator = GeneratorCall{"spun-trefoil", {{"n", 64}, {"m", 12}}};
-  o.shape = generate("spun-trefoil", o.generator->params);
-  scene.objects.push_back(std::move(o));
-  scene.physics.thickness = 0.03;
-  scene.physics.stiffness = 300;
-  World<4> w = build_world<4>(scene).world;
-  const int last = w.vertex_count() - 1;
-  w.set_external_force(0, Vec4(-2, 0, 0, 0));
-  w.set_external_force(last, Vec4(2, 0, 0, 0));
-  for (int i = 0; i < 500; ++i) w.step();
+  World<4> w = bench::pulled_spun_trefoil();
   const int runs = 1000;
   const auto t0 = Clock::now();
   for (int i = 0; i < runs; ++i) w.step();
