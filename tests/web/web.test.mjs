@@ -122,6 +122,12 @@ async function forgetAutosaves(page) {
 // move-view takes half-sides of the 3D view from its centre, as in tests/app/gui_smoke_test.cpp.
 const viewAt = (x, y) => `move-view ${((x - 640) / 400).toFixed(5)} ${((400 - y) / 400).toFixed(5)}`;
 
+// How far vertex v moved in R^4 between two dumps (their positions, 4 numbers a vertex).
+const movedBetween = (from, to, v) => {
+  const at = (d) => d.positions.slice(4 * v, 4 * v + 4);
+  return Math.hypot(...at(to).map((x, k) => x - at(from)[k]));
+};
+
 // The start page's buttons, kept for the knot sketch test below (it presses one as a user).
 let startCards = null;
 test('the start page appears with no file', async () => {
@@ -164,8 +170,7 @@ test('a grab of the spun trefoil moves the vertex, and the live check finds no t
   assert.ok(before.hits_under_cursor >= 1, 'the cursor is over the surface');
   const held = during.held_vertex;
   assert.ok(held >= 0, 'the press took hold of a vertex');
-  const at = (d, v) => d.positions.slice(4 * v, 4 * v + 4);
-  const moved = Math.hypot(...at(during, held).map((x, k) => x - at(before, held)[k]));
+  const moved = movedBetween(before, during, held);
   assert.ok(moved > 0.15, `the held vertex followed the hand (moved ${moved})`);
   assert.equal(afterRelease.held_vertex, -1, 'released');
   assert.equal(afterRelease.checked, true, 'the live check ran');
@@ -380,8 +385,7 @@ test('one finger grabs a vertex, two fingers pinch-zoom the view', async () => {
   const released = await next();
   const held = during.held_vertex;
   assert.ok(held >= 0, 'the finger took hold of a vertex');
-  const at = (d, v) => d.positions.slice(4 * v, 4 * v + 4);
-  const moved = Math.hypot(...at(during, held).map((x, k) => x - at(first, held)[k]));
+  const moved = movedBetween(first, during, held);
   assert.ok(moved > 0.15, `the held vertex followed the finger (moved ${moved})`);
   assert.equal(released.held_vertex, -1, 'lifting the finger lets go');
   assert.equal(during.true_intersections, 0);
