@@ -505,7 +505,7 @@ class GuiApp {
     model_.session.run_owned_ticks(now - last_frame_time_);
     last_frame_time_ = now;
     model_.session.refresh();
-    hints_.update(model_, glfwGetTime());
+    hints_.update(model_, now);
     if (!model_.pending_settings.empty() && model_.session.snapshot()) {  // a session's hand settings
       const ToolSettings pending = std::exchange(model_.pending_settings, {});
       apply_tool_settings(model_, pending);
