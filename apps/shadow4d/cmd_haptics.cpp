@@ -65,6 +65,101 @@ void parse_setup(const std::string& setup, HapticSceneChoice& c) {
 // cloth of today with that hand but its forces are not comparable.
 bool is_legacy_cloth(const std::string& recorded_scene) { return recorded_scene == "rubber-band"; }
 
+// What a run of the loop leaves to report: the loop's last snapshot and what the set-up decided.
+struct HapticsRun {
+  std::string device, scene, record;
+  double rate_hz = 0, wall = 0;
+  std::uint64_t ticks = 0;
+  bool async_physics = false;
+  const HapticSnapshot* snapshot = nullptr;
+  const ReplayDevice* replay = nullptr;  // a replay's device (owned by the loop), else null
+  bool recorded_async = false, legacy = false;
+  std::vector<std::string> skipped_params;
+};
+
+void print_json(const HapticsRun& r) {
+  const HapticSnapshot& s = *r.snapshot;
+  const SceneStatus& st = s.status;
+  nlohmann::json j = {{"device", r.device},
+                      {"scene", r.scene},
+                      {"rate_hz", r.rate_hz},
+                      {"wall_seconds", r.wall},
+                      {"ticks", r.ticks},
+                      {"realtime_priority", s.realtime},
+                      {"device_connected", s.device_connected},
+                      {"max_force_n", s.max_force_output},
+                      {"safety",
+                       {{"phase", safety_phase_name(s.safety_phase)},
+                        {"clamped", s.safety.clamped},
+                        {"rate_limited", s.safety.rate_limited},
+                        {"nonfinite", s.safety.nonfinite},
+                        {"disarms", s.safety.disarms}}}};
+  if (!r.replay) {
+    j["period"] = summary_json(s.period);
+    j["work"] = summary_json(s.work);
+  }
+  if (st.simulating)
+    j["physics"] = {{"steps", st.sim_steps},       {"simulated_seconds", st.sim_time},
+                    {"lag_seconds", st.lag},       {"held_vertex", st.held_vertex},
+                    {"pinned", st.pinned},         {"contacts", st.contacts},
+                    {"async", r.async_physics}};
+  if (!r.record.empty()) j["recorded"] = {{"file", r.record}, {"ticks", r.ticks}};
+  if (r.replay)
+    j["replay"] = {{"compared", r.replay->compared()},
+                   {"mismatches", r.replay->mismatches()},
+                   {"recorded_async_physics", r.recorded_async},
+                   {"recorded_rubber_band", r.legacy}};
+  std::cout << j.dump(2) << "\n";
+}
+
+void print_text(const HapticsRun& r) {
+  const HapticSnapshot& s = *r.snapshot;
+  const SceneStatus& st = s.status;
+  std::printf("haptics: device %s, scene %s, %.0f Hz, %llu ticks in %.2f s (real-time priority: %s)\n",
+              r.device.c_str(), r.scene.c_str(), r.rate_hz,
+              static_cast<unsigned long long>(r.ticks), r.wall, s.realtime ? "yes" : "no");
+  if (!r.replay) {
+    const PeriodSummary& p = s.period;
+    std::printf("  period: p50 %.1f us, p99 %.1f us, p99.9 %.1f us, max %.1f us, mean %.1f us\n", p.p50_us,
+                p.p99_us, p.p999_us, p.max_us, p.mean_us);
+    std::printf("  missed deadlines %llu, periods over 2 ms %llu, worst wake-up lateness %.1f us\n",
+                static_cast<unsigned long long>(p.missed), static_cast<unsigned long long>(p.over_2ms),
+                p.worst_lateness_us);
+    std::printf("  tick work: p50 %.1f us, p99 %.1f us, max %.1f us\n", s.work.p50_us, s.work.p99_us,
+                s.work.max_us);
+  }
+  std::printf("  force: max %.3f N; safety %s (clamped %llu, rate-limited %llu, non-finite %llu)\n",
+              s.max_force_output, safety_phase_name(s.safety_phase),
+              static_cast<unsigned long long>(s.safety.clamped),
+              static_cast<unsigned long long>(s.safety.rate_limited),
+              static_cast<unsigned long long>(s.safety.nonfinite));
+  if (st.simulating) {
+    std::printf("  physics%s: %lld steps, %.3f s simulated", r.async_physics ? " (own thread)" : "",
+                static_cast<long long>(st.sim_steps), st.sim_time);
+    if (!r.replay) std::printf(" in %.2f s (%.2f x real time), lag %.3f s", r.wall, st.sim_time / r.wall, st.lag);
+    std::printf("; held vertex %d, %d pinned, %d contacts\n", st.held_vertex, st.pinned, st.contacts);
+  }
+  if (!r.record.empty())
+    std::printf("  recorded %llu ticks to %s\n", static_cast<unsigned long long>(r.ticks),
+                r.record.c_str());
+  if (r.replay)
+    std::printf("  replay: %llu forces compared with the recording, %llu differ%s\n",
+                static_cast<unsigned long long>(r.replay->compared()),
+                static_cast<unsigned long long>(r.replay->mismatches()),
+                r.replay->mismatches() ? "" : " (bit-identical)");
+  if (r.replay && r.legacy) {
+    std::printf(
+        "  (recorded with the rubber-band cloth of before the live simulation: it held a vertex without a\n"
+        "   button and pulled it differently, so its forces cannot match and the replay does not fail on them");
+    for (std::size_t i = 0; i < r.skipped_params.size(); ++i)
+      std::printf("%s%s", i ? ", " : "; parameters not set: ", r.skipped_params[i].c_str());
+    std::printf(")\n");
+  }
+  if (r.replay && r.recorded_async)
+    std::printf(
+        "  (recorded with --async-physics: the simulation's timing was not recorded, forces may differ)\n");
+}
+
 void run(const HapticsArgs& a) {
   const DeviceSpec spec = parse_device_spec(a.device);
   std::unique_ptr<Device> device = make_device(spec);
@@ -137,85 +232,10 @@ void run(const HapticsArgs& a) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   loop.finish_recording();
-  const HapticSnapshot& s = loop.snapshot();
-  const SceneStatus& st = s.status;
-
-  if (a.json) {
-    nlohmann::json j = {{"device", to_string(spec)},
-                        {"scene", scene_name},
-                        {"rate_hz", cfg.rate_hz},
-                        {"wall_seconds", wall},
-                        {"ticks", loop.ticks()},
-                        {"realtime_priority", s.realtime},
-                        {"device_connected", s.device_connected},
-                        {"max_force_n", s.max_force_output},
-                        {"safety",
-                         {{"phase", safety_phase_name(s.safety_phase)},
-                          {"clamped", s.safety.clamped},
-                          {"rate_limited", s.safety.rate_limited},
-                          {"nonfinite", s.safety.nonfinite},
-                          {"disarms", s.safety.disarms}}}};
-    if (!replay) {
-      j["period"] = summary_json(s.period);
-      j["work"] = summary_json(s.work);
-    }
-    if (st.simulating)
-      j["physics"] = {{"steps", st.sim_steps},       {"simulated_seconds", st.sim_time},
-                      {"lag_seconds", st.lag},       {"held_vertex", st.held_vertex},
-                      {"pinned", st.pinned},         {"contacts", st.contacts},
-                      {"async", choice.async_physics}};
-    if (!a.record.empty()) j["recorded"] = {{"file", a.record}, {"ticks", loop.ticks()}};
-    if (replay)
-      j["replay"] = {{"compared", replay->compared()},
-                     {"mismatches", replay->mismatches()},
-                     {"recorded_async_physics", recorded_async},
-                     {"recorded_rubber_band", legacy}};
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::printf("haptics: device %s, scene %s, %.0f Hz, %llu ticks in %.2f s (real-time priority: %s)\n",
-                to_string(spec).c_str(), scene_name.c_str(), cfg.rate_hz,
-                static_cast<unsigned long long>(loop.ticks()), wall, s.realtime ? "yes" : "no");
-    if (!replay) {
-      const PeriodSummary& p = s.period;
-      std::printf("  period: p50 %.1f us, p99 %.1f us, p99.9 %.1f us, max %.1f us, mean %.1f us\n", p.p50_us,
-                  p.p99_us, p.p999_us, p.max_us, p.mean_us);
-      std::printf("  missed deadlines %llu, periods over 2 ms %llu, worst wake-up lateness %.1f us\n",
-                  static_cast<unsigned long long>(p.missed), static_cast<unsigned long long>(p.over_2ms),
-                  p.worst_lateness_us);
-      std::printf("  tick work: p50 %.1f us, p99 %.1f us, max %.1f us\n", s.work.p50_us, s.work.p99_us,
-                  s.work.max_us);
-    }
-    std::printf("  force: max %.3f N; safety %s (clamped %llu, rate-limited %llu, non-finite %llu)\n",
-                s.max_force_output, safety_phase_name(s.safety_phase),
-                static_cast<unsigned long long>(s.safety.clamped),
-                static_cast<unsigned long long>(s.safety.rate_limited),
-                static_cast<unsigned long long>(s.safety.nonfinite));
-    if (st.simulating) {
-      std::printf("  physics%s: %lld steps, %.3f s simulated", choice.async_physics ? " (own thread)" : "",
-                  static_cast<long long>(st.sim_steps), st.sim_time);
-      if (!replay) std::printf(" in %.2f s (%.2f x real time), lag %.3f s", wall, st.sim_time / wall, st.lag);
-      std::printf("; held vertex %d, %d pinned, %d contacts\n", st.held_vertex, st.pinned, st.contacts);
-    }
-    if (!a.record.empty())
-      std::printf("  recorded %llu ticks to %s\n", static_cast<unsigned long long>(loop.ticks()),
-                  a.record.c_str());
-    if (replay)
-      std::printf("  replay: %llu forces compared with the recording, %llu differ%s\n",
-                  static_cast<unsigned long long>(replay->compared()),
-                  static_cast<unsigned long long>(replay->mismatches()),
-                  replay->mismatches() ? "" : " (bit-identical)");
-    if (replay && legacy) {
-      std::printf(
-          "  (recorded with the rubber-band cloth of before the live simulation: it held a vertex without a\n"
-          "   button and pulled it differently, so its forces cannot match and the replay does not fail on them");
-      for (std::size_t i = 0; i < skipped_params.size(); ++i)
-        std::printf("%s%s", i ? ", " : "; parameters not set: ", skipped_params[i].c_str());
-      std::printf(")\n");
-    }
-    if (replay && recorded_async)
-      std::printf(
-          "  (recorded with --async-physics: the simulation's timing was not recorded, forces may differ)\n");
-  }
+  HapticsRun r{to_string(spec), scene_name, a.record, cfg.rate_hz, wall, loop.ticks(), choice.async_physics,
+               &loop.snapshot(), replay, recorded_async, legacy, skipped_params};
+  if (a.json) print_json(r);
+  else print_text(r);
   if (replay && replay->mismatches() > 0 && !recorded_async && !legacy) throw ExitStatus{2};
 }
 
