@@ -6,6 +6,7 @@
 #pragma once
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -59,11 +60,17 @@ class Frame {
   // front of it: clamped, never infinite, and still undone exactly by lift().
   static constexpr double kNearestEye = 1e-2;
   static std::string perspective_error(double d) {
+    // %g: a distance of 1e308 is said in a few characters, not three hundred digits.
+    const auto said = [](double v) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", v);
+      return std::string(text);
+    };
     if (std::isnan(d)) return "the perspective distance is not a number";
-    if (!(d > 0)) return "the perspective distance must be > 0 (the 4D eye sits at w = d), not " + std::to_string(d);
+    if (!(d > 0)) return "the perspective distance must be > 0 (the 4D eye sits at w = d), not " + said(d);
     if (!(d <= kMaxPerspective))
-      return "the perspective distance must be at most " + std::to_string(static_cast<long>(kMaxPerspective)) +
-             " (further away it is the orthographic shadow), not " + std::to_string(d);
+      return "the perspective distance must be at most " + said(kMaxPerspective) +
+             " (further away it is the orthographic shadow), not " + said(d);
     return {};
   }
 
