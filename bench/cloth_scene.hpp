@@ -191,11 +191,9 @@ struct FoldedDrag {
   int n = 0;
   double start = 0;
   std::vector<Vec<D>> grabbed;
-  // path: 0 every contact found afresh, 1 persistent contacts, 2 with sleeping contacts.
-  FoldedDrag(int n_, int settle, int path) : world(folded_cloth_on_table<D>(n_)), n(n_) {
+  FoldedDrag(int n_, int settle, bool persistent) : world(folded_cloth_on_table<D>(n_)), n(n_) {
     Model<D> m = world->model();
-    m.params.persistent_contacts = path != 0;
-    m.params.sleeping_contacts = path == 2;
+    m.params.persistent_contacts = persistent;
     world->set_model(std::move(m));
     for (int s = 0; s < settle; ++s) world->step();
     grab_free_edge(*world, n);

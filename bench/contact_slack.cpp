@@ -112,7 +112,7 @@ int main(int argc, char** argv) {
     }
   }
   // The drag: 200 steps settling, then 2 s (physics_bench's BM_Cloth4DFoldedDragStep).
-  FoldedDrag<4> d(n, 200, 2);
+  FoldedDrag<4> d(n, 200, true);
   Slack slack(*d.world);
   Window win;
   for (int s = 0; s < 2000; ++s) {

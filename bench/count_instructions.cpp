@@ -5,7 +5,7 @@
 // swing by ±25 %; instruction counts repeat exactly, so they are what a change is judged by
 // (scripts/count-instructions.sh runs it).
 //
-// Usage: count_instructions physics|folded|drag|pairs|impact [--n 64] [--warmup W] [--steps S] [--path 0|1|2] [--fresh 1]
+// Usage: count_instructions physics|folded|drag|pairs|impact [--n 64] [--warmup W] [--steps S] [--fresh 1]
 // Only the S measured steps are collected (callgrind --collect-atstart=no); natively it prints
 // their mean wall time as well.
 #include <chrono>
@@ -33,9 +33,7 @@ struct Options {
   int n = 64;
   int warmup = -1;  // -1: the figure's own default
   int steps = 100;
-  // folded, drag: the contact path (0 every contact found and solved afresh, 1 persistent
-  // contacts, 2 with sleeping contacts); --fresh 1 is --path 0.
-  int path = 2;
+  bool fresh = false;  // folded: every contact found and solved afresh (persistent_contacts off)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -96,30 +94,29 @@ double physics(const Options& o) {
 double folded(const Options& o) {
   std::unique_ptr<World<4>> w = folded_cloth_on_table<4>(o.n);
   Model<4> m = w->model();
-  m.params.persistent_contacts = o.path != 0;
-  m.params.sleeping_contacts = o.path == 2;
+  m.params.persistent_contacts = !o.fresh;
   w->set_model(std::move(m));
   const double ms = measure(o, 200, [&](bool timed) { return run(timed, [&] { w->step(); }); });
   std::printf("folded: state hash %016llx after %lld steps, %d contacts in the last\n",
               static_cast<unsigned long long>(state_hash(w->positions())),
               static_cast<long long>(w->data().steps), w->data().last_contacts);
   const ContactCacheStats cs = w->contact_stats();
-  std::printf("folded: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances; %lld asleep, %lld woken\n",
-              cs.searches, cs.solves, cs.carried, w->exact_distances(), cs.asleep, cs.woken);
+  std::printf("folded: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances\n",
+              cs.searches, cs.solves, cs.carried, w->exact_distances());
   return ms;
 }
 
 // The folded cloth's upper layer dragged across the lower (cloth_scene.hpp's FoldedDrag): 200
 // steps settling, then the drag's steps (warm-up 0 by default: its first 2 s are the drag).
 double drag(const Options& o) {
-  FoldedDrag<4> d(o.n, 200, o.path);
+  FoldedDrag<4> d(o.n, 200, !o.fresh);
   const double ms = measure(o, 0, [&](bool timed) { return run(timed, [&] { d.step(); }); });
   std::printf("drag: state hash %016llx after %lld steps, %d contacts in the last\n",
               static_cast<unsigned long long>(state_hash(d.world->positions())),
               static_cast<long long>(d.world->data().steps), d.world->data().last_contacts);
   const ContactCacheStats cs = d.world->contact_stats();
-  std::printf("drag: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances; %lld asleep, %lld woken\n",
-              cs.searches, cs.solves, cs.carried, d.world->exact_distances(), cs.asleep, cs.woken);
+  std::printf("drag: persistent contacts: %lld searches, %lld exact re-solves, %lld carried; %lld exact distances\n",
+              cs.searches, cs.solves, cs.carried, d.world->exact_distances());
   return ms;
 }
 
@@ -152,7 +149,7 @@ double impact(const Options& o) {
 
 int usage() {
   std::fprintf(stderr,
-               "usage: count_instructions physics|folded|drag|pairs|impact [--n N] [--warmup W] [--steps S] [--path 0|1|2] [--fresh 1]\n");
+               "usage: count_instructions physics|folded|drag|pairs|impact [--n N] [--warmup W] [--steps S] [--fresh 1]\n");
   return 2;
 }
 
@@ -170,8 +167,7 @@ int main(int argc, char** argv) {
     if (flag == "--n" && value >= 8) o.n = value;
     else if (flag == "--warmup" && value >= 0) o.warmup = value;
     else if (flag == "--steps" && value >= 1) o.steps = value;
-    else if (flag == "--fresh") o.path = value != 0 ? 0 : o.path;
-    else if (flag == "--path" && value >= 0 && value <= 2) o.path = value;
+    else if (flag == "--fresh") o.fresh = value != 0;
     else return usage();
   }
   if ((argc - 2) % 2 != 0) return usage();

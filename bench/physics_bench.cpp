@@ -37,14 +37,11 @@ int pass_throughs(std::span<const Vec<D>> x, const std::vector<Triangle>& tris) 
   return static_cast<int>(intersecting_pairs<D, 3>(x, cells, 1e-9).size());
 }
 
-// The contact path of a benchmark's "persistent" argument: 0 every contact found afresh each step
-// (the path before issue 28), 1 persistent contacts, 2 persistent with sleeping contacts (the
-// default; issue 36).
+// Persistent contacts on, or every contact found afresh each step (the path before issue 28).
 template <int D>
-void use_persistent_contacts(World<D>& w, long long path) {
+void use_persistent_contacts(World<D>& w, bool on) {
   Model<D> m = w.model();
-  m.params.persistent_contacts = path != 0;
-  m.params.sleeping_contacts = path == 2;
+  m.params.persistent_contacts = on;
   w.set_model(std::move(m));
 }
 
@@ -78,13 +75,13 @@ void BM_Cloth4DCrumpledStep(benchmark::State& state) {
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(64)->Iterations(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Cloth4DCrumpledStep)->Arg(128)->Iterations(60)->Unit(benchmark::kMillisecond);
 
-// range(1): the contact path (use_persistent_contacts: 0 the path before issue 28, 1 persistent
-// contacts, 2 with sleeping contacts), side by side.
+// range(1): 1 = persistent contacts (physics/contact_cache.hpp), 0 = every pair found and solved
+// afresh each step (the path before issue 28), side by side.
 void BM_Cloth4DFoldedContactStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   auto world = folded_cloth_on_table<4>(n);
   World<4>& w = *world;
-  use_persistent_contacts(w, state.range(1));
+  use_persistent_contacts(w, state.range(1) != 0);
   for (int s = 0; s < 200; ++s) w.step();  // the upper half settles onto the lower
   double contacts = 0;
   const long long runs0 = w.broad_phase_runs(), exact0 = w.exact_distances();
@@ -105,7 +102,6 @@ BENCHMARK(BM_Cloth4DFoldedContactStep)
     ->ArgNames({"n", "persistent"})
     ->Args({64, 0})
     ->Args({64, 1})
-    ->Args({64, 2})
     ->Iterations(300)
     ->Unit(benchmark::kMillisecond);
 
@@ -150,7 +146,7 @@ BENCHMARK(BM_KnotDrag500Step)->Iterations(3000)->Unit(benchmark::kMillisecond);
 // range(1) as in the folded step.
 void BM_Cloth4DFoldedDragStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  bench::FoldedDrag<4> d(n, 200, static_cast<int>(state.range(1)));
+  bench::FoldedDrag<4> d(n, 200, state.range(1) != 0);
   const int steps = static_cast<int>(2 * bench::kDragSeconds / d.world->model().params.time_step + 0.5);
   double contacts = 0, seconds = 0;
   int bad = 0;
@@ -180,10 +176,8 @@ BENCHMARK(BM_Cloth4DFoldedDragStep)
     ->ArgNames({"n", "persistent"})
     ->Args({32, 0})
     ->Args({32, 1})
-    ->Args({32, 2})
     ->Args({64, 0})
     ->Args({64, 1})
-    ->Args({64, 2})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
@@ -196,7 +190,7 @@ void BM_Peer3DCloth_s4d(benchmark::State& state) {
   double steps_per_s = 0;
   for (auto _ : state) {
     World<3> w = build_world<3>(flat_cloth_scene<3>(n)).world;
-    use_persistent_contacts(w, state.range(1));
+    use_persistent_contacts(w, state.range(1) != 0);
     w.pin(0);
     w.pin(n - 1);
     const auto t0 = std::chrono::steady_clock::now();
@@ -210,12 +204,11 @@ void BM_Peer3DCloth_s4d(benchmark::State& state) {
   state.counters["steps_per_s"] = steps_per_s;
   state.counters["pass_throughs"] = bad;
 }
-// range(1): the contact path, as in the folded step.
+// range(1): persistent contacts (1) or every contact found afresh (0), as in the folded step.
 BENCHMARK(BM_Peer3DCloth_s4d)
     ->ArgNames({"n", "persistent"})
     ->Args({64, 0})
     ->Args({64, 1})
-    ->Args({64, 2})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "proximity/closest_points.hpp"
 #include "proximity/continuous_collision.hpp"
@@ -55,125 +54,43 @@ CollisionSolver<D, K>::CollisionSolver(const Model<D>& model)
 }
 
 template <int D, int K>
-void CollisionSolver<D, K>::add_contact(const Model<D>& model, int a, int b, const std::array<double, 3>& wa,
-                                        const std::array<double, 3>& wb, const Vec<D>& n, double d) {
-  // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs, and so are
-  // segments a few edges apart along their chain; the fail-safe still guards them.
-  if constexpr (K == 2)
-    if (model.chain_near(a, b)) return;
-  const auto& cells = cells_of<D, K>(model);
-  Contact c;
-  c.a = a;
-  c.b = b;
-  c.wa = wa;
-  c.wb = wb;
-  c.n = n;
-  c.d = d;
-  for (int q = 0; q < K; ++q) c.wsum += wa[q] * wa[q] * w_[cells[a][q]] + wb[q] * wb[q] * w_[cells[b][q]];
-  contacts_.push_back(c);
-}
-
-template <int D, int K>
-void CollisionSolver<D, K>::gather_contacts(const Model<D>& model, std::span<const Vec<D>> x0,
-                                            std::span<const Vec<D>> v, double reach, double dt) {
+void CollisionSolver<D, K>::gather_contacts(const Model<D>& model, std::span<const Vec<D>> x0, double reach) {
   const auto& cells = cells_of<D, K>(model);
   contacts_.clear();
-  sleepers_.clear();
-  sleeper_slack_ = std::numeric_limits<double>::infinity();
+  auto add = [&](int a, int b, const std::array<double, 3>& wa, const std::array<double, 3>& wb, const Vec<D>& n,
+                 double d) {
+    // Ring pairs (joined by a mesh edge, sharing no vertex) are left to the springs, and so are
+    // segments a few edges apart along their chain; the fail-safe still guards them.
+    if constexpr (K == 2)
+      if (model.chain_near(a, b)) return;
+    Contact c;
+    c.a = a;
+    c.b = b;
+    c.wa = wa;
+    c.wb = wb;
+    c.n = n;
+    c.d = d;
+    for (int q = 0; q < K; ++q) c.wsum += wa[q] * wa[q] * w_[cells[a][q]] + wb[q] * wb[q] * w_[cells[b][q]];
+    contacts_.push_back(c);
+  };
   if (model.params.persistent_contacts) {
     cache_.update(prox_, cells, x0, reach);
     // One contact per pair of closest features: on two sheets lying on each other a vertex above
     // a vertex is the closest pair of up to 36 triangle pairs, each the same constraint.
     features_.reset(cache_.entries().size());
-    const bool sleep = model.params.sleeping_contacts && !v.empty();
-    if (sleep) {
-      // A pair's relative velocity is the same less any common one: each cell's fastest vertex
-      // less the mean velocity bounds its side of it (the weights of a side sum to one).
-      Vec<D> mean = Vec<D>::Zero();
-      for (const Vec<D>& u : v) mean += u;
-      mean /= static_cast<double>(v.size());
-      cell_bound_.resize(cells.size());
-      for (std::size_t t = 0; t < cells.size(); ++t) {
-        double m = 0;
-        for (int q = 0; q < K; ++q) m = std::max(m, (v[cells[t][q]] - mean).norm());
-        cell_bound_[t] = m;
-      }
-    }
-    const double delta = model.contact_thickness;
-    const auto entries = cache_.entries();
     // A carried distance never falls below its lower bound, and a pair solved at 0 (no normal)
     // stays at 0: d in (0, reach] says both that it may be in reach and that it has a direction.
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      const typename ContactCache<D, K>::Entry& e = entries[i];
-      if (!(e.d <= reach && e.d > 0)) continue;
-      if (sleep) {
-        // At least L - δ from δ (L ≤ d), closing at most at its cells' speeds: its normal
-        // velocity stays above the target (δ - d)/dt, so no impulse and no push until kicked.
-        const double gap = ContactCache<D, K>::lower_bound(e) - delta;
-        const double closing = dt * (cell_bound_[e.a] + cell_bound_[e.b]);
-        if (gap > closing) {
-          const double slack = (gap - closing) / dt;
-          sleepers_.push_back({static_cast<int>(i), e.a, e.b, slack});
-          sleeper_slack_ = std::min(sleeper_slack_, slack);
-          continue;
-        }
-      }
-      if (features_.insert(e.key_a, e.key_b)) add_contact(model, e.a, e.b, e.wa, e.wb, e.n, e.d);
-    }
-    asleep_ += static_cast<long long>(sleepers_.size());
+    for (const typename ContactCache<D, K>::Entry& e : cache_.entries())
+      if (e.d <= reach && e.d > 0 && features_.insert(e.key_a, e.key_b))
+        add(e.a, e.b, e.wa, e.wb, e.n, e.d);
     return;
   }
   prox_.pairs_within(x0, reach, pairs_, RingPairs::kExclude);
   for (const ProximityPair<D>& pp : pairs_) {
     const ClosestPoints<D>& cp = pp.closest;
     if (!(cp.distance > 0)) continue;  // no direction to push along; the fail-safe holds them
-    add_contact(model, pp.a, pp.b, cp.wa, cp.wb, (cp.p - cp.q) / cp.distance, cp.distance);
+    add(pp.a, pp.b, cp.wa, cp.wb, (cp.p - cp.q) / cp.distance, cp.distance);
   }
-}
-
-template <int D, int K>
-std::vector<std::array<int, 2>> CollisionSolver<D, K>::sleeping_pairs() const {
-  std::vector<std::array<int, 2>> out;
-  for (const Sleeper& s : sleepers_) out.push_back({s.a, s.b});
-  return out;
-}
-
-template <int D, int K>
-int CollisionSolver<D, K>::wake_sleepers(const Model<D>& model) {
-  if (sleepers_.empty()) return 0;
-  // A sleeper's normal velocity changed by at most its vertices' kicks, weighted: at most its two
-  // cells' largest kicks, at most twice the largest of all.
-  if (!(2 * *std::max_element(kick_.begin(), kick_.end()) >= sleeper_slack_)) return 0;
-  const auto& cells = cells_of<D, K>(model);
-  for (std::size_t t = 0; t < cells.size(); ++t) {
-    double m = 0;
-    for (int q = 0; q < K; ++q) m = std::max(m, kick_[cells[t][q]]);
-    cell_bound_[t] = m;
-  }
-  const auto entries = cache_.entries();
-  const std::size_t before = contacts_.size();
-  std::size_t kept = 0;
-  double smallest = std::numeric_limits<double>::infinity();
-  int woken = 0;
-  for (const Sleeper& s : sleepers_) {
-    if (!(cell_bound_[s.a] + cell_bound_[s.b] >= s.slack)) {
-      sleepers_[kept++] = s;
-      smallest = std::min(smallest, s.slack);
-      continue;
-    }
-    const typename ContactCache<D, K>::Entry& e = entries[static_cast<std::size_t>(s.entry)];
-    ++woken;
-    if (features_.insert(e.key_a, e.key_b)) add_contact(model, e.a, e.b, e.wa, e.wb, e.n, e.d);
-  }
-  sleepers_.resize(kept);
-  sleeper_slack_ = smallest;
-  woken_ += woken;
-  // Looked at in the next sweep: no slack known, no kicks yet.
-  for (std::size_t i = before; i < contacts_.size(); ++i) {
-    contacts_[i].slack = 0;
-    contacts_[i].kicks = 0;
-  }
-  return woken;
 }
 
 template <int D, int K>
@@ -185,7 +102,7 @@ void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec
   const double reach = kGatherFactor * delta;
   const auto& cells = cells_of<D, K>(model);
   for (int k = 0; k < model.nv; ++k) w_[k] = pinned[k] ? 0.0 : model.inv_mass[k];
-  gather_contacts(model, x0, v, reach, dt);
+  gather_contacts(model, x0, reach);
   if (contacts_.empty()) return;
   const double mu = model.params.friction;
   int acted = 0;
@@ -243,9 +160,7 @@ void CollisionSolver<D, K>::repulsion(const Model<D>& model, std::span<const Vec
       any = true;
       if (sweep == 0) ++acted;
     }
-    // The sleepers the kicks so far may have reached are looked at in the next sweep.
-    const int woken = sweep + 1 < model.params.collision_iterations ? wake_sleepers(model) : 0;
-    if (!any && woken == 0) break;
+    if (!any) break;
   }
   // The paper's response: equal and opposite displacement along the closest-point line, back
   // towards δ. Positions only, so it cannot feed kinetic energy.

@@ -9,7 +9,6 @@
 //     that has not converged every vertex is stopped. The start of a step is always η-separated,
 //     so its end is too: no step ends with two surfaces (or strands) touching or crossed.
 #pragma once
-#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -48,15 +47,7 @@ class CollisionSolver {
   // Broad-phase runs so far: the proximity list is rebuilt only when motion calls for it.
   long long broad_phase_runs() const { return prox_.broad_phase_runs(); }
   // The persistent contacts' counts (searches, exact re-solves, carried updates).
-  ContactCacheStats contact_stats() const {
-    ContactCacheStats s = cache_.stats();
-    s.asleep = asleep_;
-    s.woken = woken_;
-    return s;
-  }
-  // The pairs of cells the last step left asleep through all its sweeps (sleeping contacts: each
-  // was farther from δ than its cells' speeds and kicks could close in the step). For tests.
-  std::vector<std::array<int, 2>> sleeping_pairs() const;
+  const ContactCacheStats& contact_stats() const { return cache_.stats(); }
   // Exact cell-pair distances computed so far, by the proximity queries and the cache's re-solves.
   long long exact_distances() const { return prox_.exact_tests() + cache_.stats().solves; }
 
@@ -77,14 +68,8 @@ class CollisionSolver {
   bool touched_finite(const Model<D>& model, std::span<const Vec<D>> x,
                       std::span<const Vec<D>> v) const;
   int failsafe_pass(const Model<D>& model, std::span<const Vec<D>> x0, std::span<Vec<D>> x1);
-  // This step's contacts within `reach` at x0, into contacts_ (with their impulse weight sums);
-  // with sleeping contacts, those that cannot need an impulse yet into sleepers_ instead.
-  void gather_contacts(const Model<D>& model, std::span<const Vec<D>> x0, std::span<const Vec<D>> v,
-                       double reach, double dt);
-  void add_contact(const Model<D>& model, int a, int b, const std::array<double, 3>& wa,
-                   const std::array<double, 3>& wb, const Vec<D>& n, double d);
-  // Moves into contacts_ the sleepers whose slack the kicks so far could have used up; how many.
-  int wake_sleepers(const Model<D>& model);
+  // This step's contacts within `reach` at x0, into contacts_ (with their impulse weight sums).
+  void gather_contacts(const Model<D>& model, std::span<const Vec<D>> x0, double reach);
 
   // All pair finding goes through one coherent proximity query (self_proximity.hpp): its list
   // of close pairs with distance bounds is reused from step to step while motion is small, and
@@ -95,18 +80,6 @@ class CollisionSolver {
   std::vector<std::uint8_t> hit_;      // nv, vertices of pairs the fail-safe caught this pass
   std::vector<double> w_;              // nv, inverse masses with pins at 0
   std::vector<double> kick_;           // nv, |Δv| the impulses gave the vertex this step, summed
-  // A listed pair in reach left out of the sweeps: it needs an impulse only once its cells' kicks
-  // add up to its slack (m/s: (L - δ)/dt less its cells' speeds, L its distance's lower bound).
-  struct Sleeper {
-    int entry = 0;  // in cache_.entries()
-    int a = 0, b = 0;  // its cells
-    double slack = 0;
-  };
-  std::vector<Sleeper> sleepers_;
-  double sleeper_slack_ = 0;          // the smallest slack of sleepers_
-  // Per cell: its fastest vertex's speed less the mean (at the gather), then its largest kick.
-  std::vector<double> cell_bound_;
-  long long asleep_ = 0, woken_ = 0;  // sleepers so far, and those woken by kicks
   // The feature pairs given a contact this step (open addressing; keys never 0). Placing a pair
   // by its vertex, so that probes follow the cells' order, measured slower (more probes, no fewer
   // misses): hashed it is.

@@ -39,14 +39,10 @@ struct ContactCacheStats {
   long long searches = 0;  // fresh searches (SelfProximity::pairs_within)
   long long solves = 0;    // exact re-solves of listed pairs
   long long carried = 0;   // entry updates from the motion alone
-  long long asleep = 0;    // pairs in reach left out of a step's sweeps (sleeping contacts)
-  long long woken = 0;     // of those, the ones the impulses' kicks brought back in
   ContactCacheStats& operator+=(const ContactCacheStats& o) {
     searches += o.searches;
     solves += o.solves;
     carried += o.carried;
-    asleep += o.asleep;
-    woken += o.woken;
     return *this;
   }
 };

@@ -66,10 +66,6 @@ struct PhysicsParams {
   // Contact pairs kept from step to step and carried along their normals (physics/contact_cache);
   // false: every pair found and solved afresh each step (the path before, kept to compare with).
   bool persistent_contacts = true;
-  // With persistent contacts: a pair in reach whose lower bound less δ exceeds what its cells'
-  // speeds can close in a step is left out of the sweeps until the impulses could have used up
-  // that slack (false: every pair in reach goes through the first sweep, for side-by-side figures).
-  bool sleeping_contacts = true;
   int ccd_passes = 6;                 // fail-safe passes before the global freeze
   double max_speed = 200;             // m/s: a faster vertex means the step exploded (rolled back)
   double max_step_motion = 0;         // m per step, 0 = δ (the paper clamps motion per frame to δ)

@@ -56,10 +56,6 @@ class World {
     ContactCacheStats s = surfaces_.contact_stats();
     return s += curves_.contact_stats();
   }
-  // The cell pairs the last step's contacts left asleep (CollisionSolver::sleeping_pairs). For tests.
-  std::vector<std::array<int, 2>> sleeping_pairs() const {
-    return model_.curves() ? curves_.sleeping_pairs() : surfaces_.sleeping_pairs();
-  }
   long long exact_distances() const { return surfaces_.exact_distances() + curves_.exact_distances(); }
   const Data<D>& data() const { return data_; }
   int vertex_count() const { return model_.nv; }

@@ -172,20 +172,9 @@ std::vector<std::pair<int, int>> pairs_within_brute_force(const std::vector<Tria
 // edge, 3 cm in 0.5 s (it passed at 64² too, in 3 minutes). A cache fed the drag's positions at every step (as the world's own is) lists,
 // at every step checked, every pair that a brute-force search finds within reach, and the lower
 // bounds of the pairs it may hand to the contacts hold.
-// The sleeping contacts (PhysicsParams::sleeping_contacts) are checked along the same drag: every
-// pair a step left asleep was, by the checker's own distance at the step's start, farther from δ
-// than a step of the fastest relative motion of its vertices after the sweeps, so it needed no
-// impulse (its closest points' relative velocity is a weighted mean of those of its vertices).
 TEST(ContactCache, ADraggedUpperLayerKeepsEveryPairWithinReachListed) {
   const int n = 32;
   World<4> w = folded_cloth(true, true, n, 1.0, 0.4 / (n - 1));
-  {
-    // Sweeps until no impulse is left to give (the default stops at 4): each sleeper has then been
-    // weighed against every kick of the step.
-    Model<4> m = w.model();
-    m.params.collision_iterations = 200;
-    w.set_model(std::move(m));
-  }
   for (int s = 0; s < 150; ++s) w.step();  // the upper layer settles onto the lower
   std::vector<Vec4> grabbed;
   for (int j = 0; j < n; ++j) {
@@ -202,7 +191,7 @@ TEST(ContactCache, ADraggedUpperLayerKeepsEveryPairWithinReachListed) {
     for (int q = 0; q < 3; ++q) edge.push_back(std::minmax(t[q], t[(q + 1) % 3]));
   std::sort(edge.begin(), edge.end());
   const int drag_steps = 500;
-  int within = 0, checked = 0, asleep = 0;
+  int within = 0, checked = 0;
   std::vector<std::uint64_t> listed;
   for (int s = 0; s < 300; ++s) {
     const double u = std::min(1.0, (s + 1.0) / drag_steps);
@@ -211,26 +200,7 @@ TEST(ContactCache, ADraggedUpperLayerKeepsEveryPairWithinReachListed) {
       p[1] += 0.03 * u * u * (3 - 2 * u);  // along the fold's axis
       w.set_target((n - 1) * n + j, p);
     }
-    const int frozen = w.data().warnings.ccd_freezes;
     w.step();
-    // The fail-safe stops vertices after the sweeps (their velocity is then not the sweeps'):
-    // steps it acted in are not checked for sleepers.
-    if (s % 3 == 0 && w.data().warnings.ccd_freezes == frozen) {
-      const auto& tri = w.model().triangles;
-      const auto x0 = std::span<const Vec4>(w.data().x0);
-      const auto v = w.velocities();
-      const double delta = w.model().contact_thickness, dt = w.model().params.time_step;
-      for (const auto& [a, b] : w.sleeping_pairs()) {
-        const Tri ta{x0[tri[a][0]], x0[tri[a][1]], x0[tri[a][2]]};
-        const Tri tb{x0[tri[b][0]], x0[tri[b][1]], x0[tri[b][2]]};
-        double fastest = 0;
-        for (const int i : tri[a])
-          for (const int j : tri[b]) fastest = std::max(fastest, (v[i] - v[j]).norm());
-        ASSERT_GE(independent::triangle_distance<4>(ta, tb) - delta, dt * fastest - 1e-12)
-            << "step " << s << ": pair " << a << ", " << b << " slept through a step that could close it";
-        ++asleep;
-      }
-    }
     cache.update(prox, w.model().triangles, w.positions(), reach);
     // Checked at every tenth step of the fastest part of the drag (the checker's distance is slow,
     // 20 s a check at 64²); the cache runs at every one.
@@ -259,8 +229,6 @@ TEST(ContactCache, ADraggedUpperLayerKeepsEveryPairWithinReachListed) {
   EXPECT_GT(within, 15 * 200) << "the layers lie on each other";
   EXPECT_GT(cache.stats().searches, 2) << "the drag moved the layers past the list's skin";
   EXPECT_GT(cache.stats().solves, 0);
-  EXPECT_GT(asleep, 1000) << "the drag left contacts asleep";
-  EXPECT_GT(w.contact_stats().woken, 0) << "and the kicks woke some";
   EXPECT_EQ(pass_throughs(w), 0);
 }
 
