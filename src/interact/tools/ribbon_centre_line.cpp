@@ -12,6 +12,7 @@
 #include "interact/tools/ribbon_centre_line.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -108,8 +109,25 @@ std::vector<RibbonFold> ribbon_folds(const CentreLine& line, double width) {
     }
     return line.closed && lo == 0 && hi == n - 1 ? n - 1 : lo;
   };
+  // A fold pairs cells less than a width apart along the line: only those pairs are looked at
+  // (the ribbon passing itself further along is not a fold), a few per cell, where a search of
+  // the whole ribbon would cost a broad phase over every cell each time the line is smoothed.
+  const int cells = n - (line.closed ? 0 : 1), nt = static_cast<int>(flat.triangles.size());
+  std::vector<int> row_of(nt), first(cells + 1, 0), in_row(nt);  // the triangles of each cell row
+  for (int t = 0; t < nt; ++t) ++first[(row_of[t] = cell_row(flat.triangles[t])) + 1];
+  for (int r = 0; r < cells; ++r) first[r + 1] += first[r];
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (int t = 0; t < nt; ++t) in_row[fill[row_of[t]]++] = t;
+  std::vector<std::array<int, 2>> candidates;
+  for (int a = 0; a < cells; ++a)
+    for (int i = first[a]; i < first[a + 1]; ++i)
+      for (int d = 0; d < cells && d * line.spacing < width && (line.closed || a + d < cells); ++d) {
+        const int b = (a + d) % cells;
+        for (int j = d == 0 ? i + 1 : first[b]; j < first[b + 1]; ++j)
+          candidates.push_back({in_row[i], in_row[j]});
+      }
   std::set<std::pair<int, int>> found;
-  for (const ProximityPair<3>& p : self_intersections<3>(flat).pairs) {
+  for (const ProximityPair<3>& p : self_intersections_among<3>(flat, candidates).pairs) {
     int a = cell_row(flat.triangles[p.a]), b = cell_row(flat.triangles[p.b]);
     if (a > b) std::swap(a, b);
     const int d = line.closed ? std::min(b - a, n - (b - a)) : b - a;
@@ -160,6 +178,7 @@ int count_turns(const CentreLine& line, const std::vector<RibbonFold>& folds, do
 struct Smoother {
   std::vector<PenPoint<3>> drawn, line;  // evenly resampled copies: as drawn, as smoothed so far
   std::vector<double> weight;            // how much each point is smoothed (0: left as drawn)
+  std::vector<int> moving;               // the points smoothed, in order (a few near the folds)
   bool closed = false;
   double step = 0;                       // between the drawn copy's points
 
@@ -178,14 +197,16 @@ struct Smoother {
         weight[i] = std::max(weight[i], std::clamp(2.5 - d / width, 0.0, 1.0));
       }
     }
+    moving.clear();
+    for (int i = 0; i < count(); ++i)
+      if (weight[i] > 0 && movable(i)) moving.push_back(i);
   }
 
   std::vector<PenPoint<3>> smoothed(int passes) const {
     std::vector<PenPoint<3>> cur = line, next = line;
     const int n = count();
     for (int k = 0; k < passes; ++k) {
-      for (int i = 0; i < n; ++i) {
-        if (weight[i] <= 0 || !movable(i)) continue;
+      for (int i : moving) {
         const Vec3& a = cur[(i + n - 1) % n].at;
         const Vec3& b = cur[(i + 1) % n].at;
         next[i].at = cur[i].at + kRate * weight[i] * (0.5 * (a + b) - cur[i].at);

@@ -63,7 +63,8 @@ CentreLineResult ribbon_centre_line(const std::vector<PenPoint<3>>& path, bool c
 // the line; where the line runs along the line of sight the last good direction carries on.
 std::vector<Vec3> across_directions(const std::vector<PenPoint<3>>& rows, bool closed, const Vec3& eye);
 
-// The folds of a flat ribbon `width` wide along `line` (its directions across).
+// The folds of a flat ribbon `width` wide along `line` (its directions across). Only cells less
+// than a width apart along the line are looked at: a few per cell, whatever the ribbon's shape.
 std::vector<RibbonFold> ribbon_folds(const CentreLine& line, double width);
 
 }  // namespace s4d
