@@ -137,9 +137,13 @@ IntersectionReport<D> self_intersections_among(const Surface<D>& s,
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::vector<ProximityPair<D>> out;
   const std::span<const Vec<D>> x(s.vertices);
+  // The broad phase's test, a pair at a time: boxes farther apart than the tolerance.
+  std::vector<Box<D>> boxes;
+  prox_detail::static_boxes<D, 3>(x, s.triangles, boxes);
   for (const auto& [a, b] : pairs)
-    prox_detail::narrow_within<D, 3, 3>(prox_detail::gather<D, 3>(x, s.triangles[a]),
-                                        prox_detail::gather<D, 3>(x, s.triangles[b]), a, b, tol, out);
+    if (!(prox_detail::box_gap<D>(boxes[a], boxes[b]) > tol))
+      prox_detail::narrow_within<D, 3, 3>(prox_detail::gather<D, 3>(x, s.triangles[a]),
+                                          prox_detail::gather<D, 3>(x, s.triangles[b]), a, b, tol, out);
   return finish<D>(std::move(out), tol, merge);
 }
 
