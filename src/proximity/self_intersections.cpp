@@ -1,10 +1,15 @@
 // Finder (a): self-intersections of a surface, and intersections between two surfaces.
 #include "proximity/self_intersections.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <string>
 #include <unordered_map>
+
+#include "core/error.hpp"
+#include "proximity/narrow_phase.hpp"
 
 namespace s4d {
 
@@ -110,6 +115,39 @@ IntersectionReport<D> self_intersections(const Surface<D>& s, const Intersection
 }
 
 template <int D>
+IntersectionReport<D> self_intersections_among(const Surface<D>& s,
+                                               std::span<const std::array<int, 2>> candidates,
+                                               const IntersectionOptions& opt) {
+  const double diag = diagonal<D>(s.vertices, nullptr);
+  const double tol = opt.tolerance >= 0 ? opt.tolerance : 1e-9 * diag;
+  const double merge = opt.merge_distance >= 0 ? opt.merge_distance : 1e-6 * diag;
+  const int nt = static_cast<int>(s.triangles.size());
+  prox_detail::check_size(s.vertices.size(), prox_detail::max_index<3>(s.triangles), "the surface");
+  std::vector<std::array<int, 2>> pairs;
+  pairs.reserve(candidates.size());
+  for (const auto& [a, b] : candidates) {
+    if (a < 0 || b < 0 || a >= nt || b >= nt)
+      throw Error("proximity: a candidate pair names triangle " + std::to_string(a < 0 || a >= nt ? a : b) +
+                  " of a surface of " + std::to_string(nt));
+    if (a != b && !share_vertex<3, 3>(s.triangles[a], s.triangles[b]))
+      pairs.push_back({std::min(a, b), std::max(a, b)});
+  }
+  // Each pair once, in self_intersections' order (a, b).
+  if (!std::is_sorted(pairs.begin(), pairs.end())) std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<ProximityPair<D>> out;
+  const std::span<const Vec<D>> x(s.vertices);
+  // The broad phase's test, a pair at a time: boxes farther apart than the tolerance.
+  std::vector<Box<D>> boxes;
+  prox_detail::static_boxes<D, 3>(x, s.triangles, boxes);
+  for (const auto& [a, b] : pairs)
+    if (!(prox_detail::box_gap<D>(boxes[a], boxes[b]) > tol))
+      prox_detail::narrow_within<D, 3, 3>(prox_detail::gather<D, 3>(x, s.triangles[a]),
+                                          prox_detail::gather<D, 3>(x, s.triangles[b]), a, b, tol, out);
+  return finish<D>(std::move(out), tol, merge);
+}
+
+template <int D>
 IntersectionReport<D> surface_intersections(const Surface<D>& a, const Surface<D>& b,
                                             const IntersectionOptions& opt) {
   const double diag = diagonal<D>(a.vertices, &b.vertices);
@@ -124,6 +162,8 @@ IntersectionReport<D> surface_intersections(const Surface<D>& a, const Surface<D
 #define S4D_INSTANTIATE(D)                                                                       \
   template IntersectionReport<D> self_intersections<D>(const Surface<D>&,                        \
                                                        const IntersectionOptions&);              \
+  template IntersectionReport<D> self_intersections_among<D>(                                    \
+      const Surface<D>&, std::span<const std::array<int, 2>>, const IntersectionOptions&);       \
   template IntersectionReport<D> surface_intersections<D>(const Surface<D>&, const Surface<D>&,  \
                                                           const IntersectionOptions&);           \
   template std::vector<Vec<D>> merge_points<D>(const std::vector<Vec<D>>&, double);

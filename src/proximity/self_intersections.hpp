@@ -1,6 +1,8 @@
 // Finder (a): where a surface in R^D meets itself (or another surface): touching or crossing
 // triangle pairs and the distinct points where they meet. The "no pass-through" check.
 #pragma once
+#include <array>
+#include <span>
 #include <vector>
 
 #include "proximity/mesh_proximity.hpp"
@@ -29,6 +31,15 @@ struct IntersectionReport {
 // Self-intersections of one surface: triangle pairs sharing no vertex.
 template <int D>
 IntersectionReport<D> self_intersections(const Surface<D>& s, const IntersectionOptions& opt = {});
+// The same test over the given triangle pairs only, for a caller that knows where meetings can
+// be (pairs sharing a vertex, or a triangle with itself, are skipped; the tolerances are those
+// self_intersections would use for the whole surface): it reports exactly the pairs of
+// self_intersections that are among `candidates`, without a broad phase over the whole surface.
+// Throws s4d::Error for a pair naming no triangle of `s`.
+template <int D>
+IntersectionReport<D> self_intersections_among(const Surface<D>& s,
+                                               std::span<const std::array<int, 2>> candidates,
+                                               const IntersectionOptions& opt = {});
 // Intersections of two different surfaces: every triangle pair.
 template <int D>
 IntersectionReport<D> surface_intersections(const Surface<D>& a, const Surface<D>& b,

@@ -2,8 +2,13 @@
 // shadow classified by 4D depth, on surfaces whose answers are known by construction.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <span>
+#include <utility>
+#include <vector>
 
+#include "core/error.hpp"
 #include "proximity/self_intersections.hpp"
 #include "proximity/shadow_intersections.hpp"
 
@@ -95,6 +100,56 @@ TEST(SelfIntersections, BetweenTwoSurfaces) {
   EXPECT_NEAR(r.points[0].norm(), 0.0, 1e-12);
   for (auto& v : b.vertices) v += Vec4(3, 0, 0, 0);  // now far apart
   EXPECT_TRUE(surface_intersections(a, b).points.empty());
+}
+
+TEST(SelfIntersections, AmongGivenPairsIsTheWholeSearchRestrictedToThem) {
+  // A crumpled ribbon in R^3 (a strip along a curve that crosses itself and folds back): its
+  // meeting pairs by the whole search, against the restricted one over every pair, over the pairs
+  // of one half, and over a list with repeats, reversed pairs, a triangle with itself and pairs
+  // sharing a vertex (skipped).
+  Surface<3> s;
+  const int n = 120;
+  for (int i = 0; i < n; ++i) {
+    const double t = 4 * kPi * i / n;
+    const Vec3 c(std::cos(t) + 0.4 * std::cos(3 * t), std::sin(t), 0.05 * std::sin(5 * t));
+    s.vertices.push_back(c + Vec3(0, 0, 0.08));
+    s.vertices.push_back(c - Vec3(0, 0, 0.08));
+  }
+  for (int i = 0; i + 1 < n; ++i) {
+    s.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    s.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  const auto whole = self_intersections(s);
+  ASSERT_GT(whole.pairs.size(), 4u);
+  const int nt = static_cast<int>(s.triangles.size());
+  std::vector<std::array<int, 2>> every, half, messy;
+  for (int a = 0; a < nt; ++a)
+    for (int b = a + 1; b < nt; ++b) {
+      every.push_back({b, a});
+      if (a < nt / 2) half.push_back({a, b});
+    }
+  std::vector<std::pair<int, int>> expected_half;
+  for (const auto& p : whole.pairs) {
+    if (p.a < nt / 2) expected_half.push_back({p.a, p.b});
+    messy.push_back({p.b, p.a});
+    messy.push_back({p.a, p.b});
+    messy.push_back({p.a, p.a});
+    messy.push_back({p.a, p.a + 1});  // a neighbour: skipped if it shares a vertex
+  }
+  auto ids = [](const IntersectionReport<3>& r) {
+    std::vector<std::pair<int, int>> out;
+    for (const auto& p : r.pairs) out.push_back({p.a, p.b});
+    return out;
+  };
+  const auto all = self_intersections_among(s, every);
+  EXPECT_EQ(ids(all), ids(whole));
+  EXPECT_EQ(all.points.size(), whole.points.size());
+  EXPECT_EQ(all.tolerance, whole.tolerance);
+  EXPECT_EQ(ids(self_intersections_among(s, half)), expected_half);
+  EXPECT_EQ(ids(self_intersections_among(s, messy)), ids(whole));
+  EXPECT_TRUE(self_intersections_among(s, std::span<const std::array<int, 2>>()).pairs.empty());
+  const std::vector<std::array<int, 2>> bad{{0, nt}};
+  EXPECT_THROW(self_intersections_among(s, bad), Error);
 }
 
 // Every segment is in exactly one stroke, and a stroke's points are its segments' ends in

@@ -12,6 +12,7 @@
 #include "interact/tools/ribbon_centre_line.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -108,8 +109,25 @@ std::vector<RibbonFold> ribbon_folds(const CentreLine& line, double width) {
     }
     return line.closed && lo == 0 && hi == n - 1 ? n - 1 : lo;
   };
+  // A fold pairs cells less than a width apart along the line: only those pairs are looked at
+  // (the ribbon passing itself further along is not a fold), a few per cell, where a search of
+  // the whole ribbon would cost a broad phase over every cell each time the line is smoothed.
+  const int cells = n - (line.closed ? 0 : 1), nt = static_cast<int>(flat.triangles.size());
+  std::vector<int> row_of(nt), first(cells + 1, 0), in_row(nt);  // the triangles of each cell row
+  for (int t = 0; t < nt; ++t) ++first[(row_of[t] = cell_row(flat.triangles[t])) + 1];
+  for (int r = 0; r < cells; ++r) first[r + 1] += first[r];
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (int t = 0; t < nt; ++t) in_row[fill[row_of[t]]++] = t;
+  std::vector<std::array<int, 2>> candidates;
+  for (int a = 0; a < cells; ++a)
+    for (int i = first[a]; i < first[a + 1]; ++i)
+      for (int d = 0; d < cells && d * line.spacing < width && (line.closed || a + d < cells); ++d) {
+        const int b = (a + d) % cells;
+        for (int j = d == 0 ? i + 1 : first[b]; j < first[b + 1]; ++j)
+          candidates.push_back({in_row[i], in_row[j]});
+      }
   std::set<std::pair<int, int>> found;
-  for (const ProximityPair<3>& p : self_intersections<3>(flat).pairs) {
+  for (const ProximityPair<3>& p : self_intersections_among<3>(flat, candidates).pairs) {
     int a = cell_row(flat.triangles[p.a]), b = cell_row(flat.triangles[p.b]);
     if (a > b) std::swap(a, b);
     const int d = line.closed ? std::min(b - a, n - (b - a)) : b - a;
@@ -160,6 +178,7 @@ int count_turns(const CentreLine& line, const std::vector<RibbonFold>& folds, do
 struct Smoother {
   std::vector<PenPoint<3>> drawn, line;  // evenly resampled copies: as drawn, as smoothed so far
   std::vector<double> weight;            // how much each point is smoothed (0: left as drawn)
+  std::vector<int> moving;               // the points smoothed, in order (a few near the folds)
   bool closed = false;
   double step = 0;                       // between the drawn copy's points
 
@@ -173,24 +192,36 @@ struct Smoother {
     const double length = polyline_length(line, closed);
     for (const RibbonFold& f : folds) {
       const auto stretch = fold_stretch(rows, f);
-      for (int i = 0; i < count(); ++i) {
-        const double d = to_stretch(at[i], stretch, length, closed);
-        weight[i] = std::max(weight[i], std::clamp(2.5 - d / width, 0.0, 1.0));
+      // Only points within 2.5 widths of the stretch gain weight: those (closed: round the loop
+      // either way) lie among the points 3 widths or less from it, found by bisection.
+      for (int turn = closed ? -1 : 0; turn <= (closed ? 1 : 0); ++turn) {
+        const double shift = turn * length;
+        const auto lo = std::lower_bound(at.begin(), at.end(), stretch.first + shift - 3 * width);
+        const auto hi = std::upper_bound(lo, at.end(), stretch.second + shift + 3 * width);
+        for (auto it = lo; it != hi; ++it) {
+          const int i = static_cast<int>(it - at.begin());
+          const double d = to_stretch(at[i], stretch, length, closed);
+          weight[i] = std::max(weight[i], std::clamp(2.5 - d / width, 0.0, 1.0));
+        }
       }
     }
+    moving.clear();
+    for (int i = 0; i < count(); ++i)
+      if (weight[i] > 0 && movable(i)) moving.push_back(i);
   }
 
   std::vector<PenPoint<3>> smoothed(int passes) const {
-    std::vector<PenPoint<3>> cur = line, next = line;
+    std::vector<PenPoint<3>> cur = line;
+    std::vector<Vec3> next(moving.size());  // each pass reads the last one's points only
     const int n = count();
     for (int k = 0; k < passes; ++k) {
-      for (int i = 0; i < n; ++i) {
-        if (weight[i] <= 0 || !movable(i)) continue;
+      for (std::size_t m = 0; m < moving.size(); ++m) {
+        const int i = moving[m];
         const Vec3& a = cur[(i + n - 1) % n].at;
         const Vec3& b = cur[(i + 1) % n].at;
-        next[i].at = cur[i].at + kRate * weight[i] * (0.5 * (a + b) - cur[i].at);
+        next[m] = cur[i].at + kRate * weight[i] * (0.5 * (a + b) - cur[i].at);
       }
-      std::swap(cur, next);
+      for (std::size_t m = 0; m < moving.size(); ++m) cur[moving[m]].at = next[m];
     }
     return cur;
   }
@@ -227,10 +258,20 @@ struct Smoother {
 }  // namespace
 
 CentreLineResult ribbon_centre_line(const std::vector<PenPoint<3>>& path, bool closed, double spacing,
-                                    int min_segments, double width, const Vec3& eye, double max_move) {
+                                    int min_segments, double width, const Vec3& eye, double max_move,
+                                    long long max_work) {
   CentreLineResult out;
+  auto folds_of = [&](const CentreLine& line, double w) {
+    out.work += static_cast<long long>(line.rows.size());
+    return ribbon_folds(line, w);
+  };
+  // Whether the budget has room for an attempt: its two fold tests of about as many rows.
+  auto affordable = [&] {
+    out.cut_short = out.cut_short || out.work + 2 * static_cast<long long>(out.line.rows.size()) > max_work;
+    return !out.cut_short;
+  };
   out.line = rows_along(path, closed, spacing, min_segments, eye);
-  out.folds = ribbon_folds(out.line, width);
+  out.folds = folds_of(out.line, width);
   out.smoothing.limit = std::max(max_move, 0.0);
   for (const RibbonFold& f : out.folds)
     out.places.push_back({out.line.rows[f.a].at, f.a * out.line.spacing / out.line.length});
@@ -263,22 +304,23 @@ CentreLineResult ribbon_centre_line(const std::vector<PenPoint<3>>& path, bool c
     a.too_far = a.moved > max_move || a.cut > 2 * max_move;
     if (a.too_far) return a;
     a.rows = rows_along(a.line, closed, spacing, min_segments, eye);
-    a.folds = ribbon_folds(a.rows, width);
-    a.aim = ribbon_folds(a.rows, kMargin * width);
+    a.folds = folds_of(a.rows, width);
+    a.aim = folds_of(a.rows, kMargin * width);
     a.aim.insert(a.aim.end(), a.folds.begin(), a.folds.end());
     return a;
   };
   const int first = static_cast<int>(std::ceil(kRoundBlur * width * width / (kRate * sm.step * sm.step)));
-  std::vector<RibbonFold> aim = ribbon_folds(out.line, kMargin * width);
+  std::vector<RibbonFold> aim = folds_of(out.line, kMargin * width);
   aim.insert(aim.end(), out.folds.begin(), out.folds.end());
-  for (int round = 1, passes = first; round <= kMaxRounds && passes >= first && !aim.empty();) {
+  for (int round = 1, passes = first;
+       round <= kMaxRounds && passes >= first && !aim.empty() && affordable();) {
     sm.mark(out.line, aim, width);
     Attempt a = attempt(passes);
     if (a.too_far) {
       passes /= 2;
       continue;
     }
-    for (int fewer = passes / 2; a.aim.empty() && fewer >= first; fewer /= 2) {
+    for (int fewer = passes / 2; a.aim.empty() && fewer >= first && affordable(); fewer /= 2) {
       Attempt b = attempt(fewer);
       if (b.too_far || !b.aim.empty()) break;
       a = std::move(b);

@@ -5,6 +5,7 @@
 // ribbon lies flat with a margin, never moving further than a bound from the line drawn. A stroke
 // whose ribbon does not fold is kept exactly as drawn.
 #pragma once
+#include <limits>
 #include <vector>
 
 #include "core/vec.hpp"
@@ -47,6 +48,8 @@ struct CentreLineResult {
   CentreLineSmoothing smoothing;
   std::vector<RibbonFold> folds;  // still there (empty: the ribbon lies flat without folding)
   std::vector<FoldPlace> places;  // one per fold still there: the drawn fold nearest it
+  long long work = 0;             // rows the fold tests looked at: what the smoothing cost
+  bool cut_short = false;         // the smoothing stopped at `max_work`: folds left may not be final
 };
 
 // The line of `path` (at least 2 points) in rows `spacing` apart (at least `min_segments`
@@ -54,16 +57,19 @@ struct CentreLineResult {
 // line is smoothed (Laplacian, the ends of an open line kept) until it lies flat even 1.25 times
 // as wide, or until smoothing further would move the line more than `max_move` from the one
 // drawn, or leave a point drawn more than 2 max_move from it (a hook at a corner may be cut off,
-// a hairpin may not be shortened); 0: never smoothed. Throws s4d::Error when the line runs along
-// the line of sight.
+// a hairpin may not be shortened); 0: never smoothed. No smoothing round starts that would take
+// the work past `max_work` (then cut_short): a caller trying many widths bounds its search so.
+// Throws s4d::Error when the line runs along the line of sight.
 CentreLineResult ribbon_centre_line(const std::vector<PenPoint<3>>& path, bool closed, double spacing,
-                                    int min_segments, double width, const Vec3& eye, double max_move);
+                                    int min_segments, double width, const Vec3& eye, double max_move,
+                                    long long max_work = std::numeric_limits<long long>::max());
 
 // Unit directions across a flat ribbon along `rows`: in the plane facing `eye`, perpendicular to
 // the line; where the line runs along the line of sight the last good direction carries on.
 std::vector<Vec3> across_directions(const std::vector<PenPoint<3>>& rows, bool closed, const Vec3& eye);
 
-// The folds of a flat ribbon `width` wide along `line` (its directions across).
+// The folds of a flat ribbon `width` wide along `line` (its directions across). Only cells less
+// than a width apart along the line are looked at: a few per cell, whatever the ribbon's shape.
 std::vector<RibbonFold> ribbon_folds(const CentreLine& line, double width);
 
 }  // namespace s4d

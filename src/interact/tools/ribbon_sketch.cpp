@@ -349,28 +349,59 @@ void lay_out(Layout& l, std::span<const RibbonStrokeSample> stroke, const Vec3& 
   l.scale = std::max(l.size, l.width);
 }
 
+// What the search for a narrower ribbon found.
+struct WidestFlat {
+  double width = 0;        // the widest that lies flat (0: none found)
+  double narrowest = 0;    // the narrowest width found to fold (0: none tried)
+  bool cut_short = false;  // the search stopped at its budget of work
+  long long work = 0;      // rows its fold tests looked at
+};
+
 // The widest ribbon narrower than the layout's whose centre line lies flat without folding, to
 // two significant digits (rounded down); 0 when none does down to a twentieth of the width (a
-// narrower one would be another ribbon: the turn is what to change).
-double widest_flat(const Layout& l, const Vec3& eye, const RibbonSketchOptions& o) {
+// narrower one would be another ribbon: the turn is what to change). The search looks at no more
+// than kRibbonSuggestionWork rows in all (the window waits for it): a width it cannot settle
+// within that ends it.
+WidestFlat widest_flat(const Layout& l, const Vec3& eye, const RibbonSketchOptions& o) {
+  WidestFlat out;
+  // 1: lies flat; 0: folds; -1: not settled within the budget.
   auto flat = [&](double w) {
     const double spacing = row_spacing(o, w, l.size);
-    if (l.path_length / spacing > kMaxRows) return false;
-    return ribbon_centre_line(l.path, o.closed, spacing, o.closed ? 8 : 2, w, eye, o.max_move * w).folds.empty();
+    if (l.path_length / spacing > kMaxRows) return 0;
+    const long long left = kRibbonSuggestionWork - out.work;
+    if (2 * static_cast<long long>(std::ceil(l.path_length / spacing) + 1) > left) return -1;
+    const CentreLineResult r =
+        ribbon_centre_line(l.path, o.closed, spacing, o.closed ? 8 : 2, w, eye, o.max_move * w, left);
+    out.work += r.work;
+    return r.folds.empty() ? 1 : r.cut_short ? -1 : 0;
   };
   double good = 0, bad = l.width;
   for (double w = 0.7 * l.width; w >= std::max(l.width / 20, 1e-4 * l.size) && good == 0; w *= 0.7) {
-    if (flat(w)) good = w;
-    else bad = w;
+    const int f = flat(w);
+    if (f < 0) {
+      out.cut_short = true;
+      return out;
+    }
+    (f > 0 ? good : bad) = w;
+    if (f == 0) out.narrowest = w;
   }
-  if (good == 0) return 0;
+  if (good == 0) return out;
+  out.width = good;
   for (int k = 0; k < 3; ++k) {
     const double mid = 0.5 * (good + bad);
-    (flat(mid) ? good : bad) = mid;
+    const int f = flat(mid);
+    if (f < 0) {
+      out.cut_short = true;
+      return out;
+    }
+    (f > 0 ? good : bad) = mid;
   }
   const double digit = std::pow(10.0, std::floor(std::log10(good)) - 1);
   const double rounded = std::floor(good / digit) * digit;
-  return rounded > 0 && flat(rounded) ? rounded : good;
+  const int f = rounded > 0 ? flat(rounded) : 0;
+  out.cut_short = f < 0;
+  out.width = f > 0 ? rounded : good;
+  return out;
 }
 
 // Refuses a ribbon that folds at cell rows a < b, at `place` on the stroke as drawn (`along` the
@@ -391,12 +422,18 @@ double widest_flat(const Layout& l, const Vec3& eye, const RibbonSketchOptions& 
     what += ", even smoothed as far as it may move (" + fmt(l.smoothing.limit) + ", " + fmt(o.max_move) +
             " of the width)";
   what += at_join ? "; end the stroke nearer its start, heading the way it began" : "; draw that turn wider";
-  const double widest = widest_flat(l, eye, o);
-  if (widest > 0)
-    what += ", or make the ribbon at most " + fmt(widest) + " wide";
-  else
+  const WidestFlat widest = widest_flat(l, eye, o);
+  if (widest.width > 0)
+    what += ", or make the ribbon at most " + fmt(widest.width) + " wide";
+  else if (!widest.cut_short)
     what += " (no narrower ribbon lies flat there)";
-  throw RibbonFoldError(what, place.at, widest);
+  if (widest.cut_short && widest.width > 0)
+    what += " (the search for the widest that lies flat there was cut short: a wider one may too)";
+  else if (widest.cut_short)
+    what +=
+        " (the search for a narrower ribbon that lies flat there was cut short" +
+        (widest.narrowest > 0 ? ": none down to " + fmt(widest.narrowest) + " wide does)" : std::string(")"));
+  throw RibbonFoldError(what, place.at, widest.width, widest.cut_short, widest.work);
 }
 
 // Where the ribbon passes itself: overlapping cells far apart along the stroke. Cells near each

@@ -177,6 +177,56 @@ TEST(RibbonRoughStroke, AStrokeThatDoublesBackFoldsAtAnyWidth) {
   }
 }
 
+TEST(RibbonRoughStroke, ALongStrokeIsRefusedAsBeforeWithinTheSearchsBudget) {
+  // The fuzzer's stroke (a spike to y = 720 the pen rounds off at 56): 117 long, 585 widths of the
+  // default ribbon, folding at the spike's tip at every width. Its search for a narrower ribbon
+  // took 745 k rows of fold tests, seconds (minutes under ASan); it stops at the budget, with the
+  // refusal it gave before and a sentence saying how far it looked.
+  const auto stroke = read_ribbon_stroke(
+      std::string(S4D_TEST_DATA) + "/fuzz_regressions/ribbon_stroke/spike_585_widths_long.txt", 1.0 / 120);
+  try {
+    ribbon_from_sketch(stroke, {}, Frame<4>(), kEye);
+    ADD_FAILURE() << "accepted";
+  } catch (const RibbonFoldError& e) {
+    const std::string what = e.what();
+    const std::string before =
+        "the ribbon folds onto itself near (0.6062, 56.61, 0), 49% of the way along the stroke: the stroke "
+        "turns there more sharply than half the ribbon's width (0.1), even smoothed as far as it may move "
+        "(0.1, 0.5 of the width); draw that turn wider";
+    EXPECT_EQ(what.substr(0, before.size()), before) << what;
+    EXPECT_EQ(what.substr(before.size()),
+              " (the search for a narrower ribbon that lies flat there was cut short: none down to 0.0686 "
+              "wide does)");
+    EXPECT_EQ(e.widest, 0) << "as before: none found";
+    EXPECT_TRUE(e.search_cut_short);
+    EXPECT_LE(e.search_work, kRibbonSuggestionWork);
+    EXPECT_GT(e.search_work, kRibbonSuggestionWork / 2);
+  }
+}
+
+TEST(RibbonRoughStroke, TheCentreLinesSmoothingStopsAtItsBudget) {
+  // The right angle of the test below, smoothed with room for its first fold tests only: it
+  // stops, says so, and has looked at no more rows than it was given.
+  std::vector<PenPoint<3>> path;
+  for (int i = 0; i <= 100; ++i) path.push_back({Vec3(-1 + 0.01 * i, 0, 0), 0.01 * i});
+  for (int i = 1; i <= 100; ++i) path.push_back({Vec3(0, 0.01 * i, 0), 1 + 0.01 * i});
+  const CentreLineResult as_drawn = ribbon_centre_line(path, false, 0.05, 2, 0.2, kEye, 0);
+  const long long rows = static_cast<long long>(as_drawn.line.rows.size());
+  EXPECT_EQ(as_drawn.work, rows) << "one fold test";
+  const CentreLineResult whole = ribbon_centre_line(path, false, 0.05, 2, 0.2, kEye, 0.1);
+  EXPECT_FALSE(whole.cut_short);
+  EXPECT_GT(whole.work, 4 * rows - 10) << "the line as drawn and at least one round, each at two widths";
+  const CentreLineResult cut = ribbon_centre_line(path, false, 0.05, 2, 0.2, kEye, 0.1, 3 * rows);
+  EXPECT_TRUE(cut.cut_short);
+  EXPECT_EQ(cut.work, 2 * rows);
+  EXPECT_EQ(cut.smoothing.rounds, 0);
+  EXPECT_FALSE(cut.folds.empty());
+  const CentreLineResult roomy = ribbon_centre_line(path, false, 0.05, 2, 0.2, kEye, 0.1, whole.work);
+  EXPECT_FALSE(roomy.cut_short);
+  EXPECT_EQ(roomy.line.rows.size(), whole.line.rows.size());
+  EXPECT_EQ(roomy.work, whole.work);
+}
+
 TEST(RibbonRoughStroke, TheCentreLineAloneMovesOnlyNearTheFolds) {
   // A right-angled corner under a ribbon 0.2 wide: smoothed there, the far ends untouched.
   std::vector<PenPoint<3>> path;
