@@ -1,6 +1,9 @@
 // Two meshes against each other: BVH candidates, then the narrow phase of narrow_phase.hpp.
 #include "proximity/mesh_proximity.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "proximity/narrow_phase.hpp"
 
 namespace s4d {
@@ -15,20 +18,48 @@ PairProximity<D, KA, KB>::PairProximity(std::vector<Cell<KA>> cells_a, std::vect
 }
 
 template <int D, int KA, int KB>
-void PairProximity<D, KA, KB>::pairs_within(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb,
-                                            double delta, std::vector<ProximityPair<D>>& out) {
-  out.clear();
+void PairProximity<D, KA, KB>::refit_at(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb) {
   check_size(xa.size(), max_a_, "the first position array");
   check_size(xb.size(), max_b_, "the second position array");
   static_boxes<D, KA>(xa, cells_a_, boxes_a_);
   static_boxes<D, KB>(xb, cells_b_, boxes_b_);
   bvh_a_.refit(boxes_a_);
   bvh_b_.refit(boxes_b_);
+}
+
+template <int D, int KA, int KB>
+void PairProximity<D, KA, KB>::pairs_within(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb,
+                                            double delta, std::vector<ProximityPair<D>>& out) {
+  out.clear();
+  refit_at(xa, xb);
   bvh_a_.pairs_with(bvh_b_, delta, [&](int i, int j) {
     narrow_within<D, KA, KB>(gather<D, KA>(xa, cells_a_[i]), gather<D, KB>(xb, cells_b_[j]), i, j,
                              delta, out);
   });
   sort_pairs(out);
+}
+
+template <int D, int KA, int KB>
+double PairProximity<D, KA, KB>::smallest_distance(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb,
+                                                   double up_to) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (!(up_to >= 0)) return inf;
+  refit_at(xa, xb);
+  // The radius doubles from a small one: the pass that finds a pair visits only the candidates
+  // within twice the answer, where one pass at `up_to` could visit every cell against every cell.
+  for (double r = up_to / 64;; r = std::min(2 * r, up_to)) {
+    double best = r;
+    bool found = false;
+    bvh_a_.pairs_with(bvh_b_, r, [&](int i, int j) {
+      const Simplex<D, KA> sa = gather<D, KA>(xa, cells_a_[i]);
+      const Simplex<D, KB> sb = gather<D, KB>(xb, cells_b_[j]);
+      if (provably_farther<D, KA, KB>(sa, sb, best)) return;
+      const double d = closest_points<D, KA, KB>(sa, sb).distance;
+      if (d <= best) best = d, found = true;
+    });
+    if (found) return best;
+    if (r >= up_to) return inf;
+  }
 }
 
 template <int D, int KA, int KB>

@@ -21,11 +21,16 @@ class PairProximity {
 
   void pairs_within(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb, double delta,
                     std::vector<ProximityPair<D>>& out);
+  // The smallest distance between a cell of each, when it is at most `up_to`; else infinity.
+  // Keeps no pairs, so it stays small where pairs_within at `up_to` would list millions.
+  double smallest_distance(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb, double up_to);
   Impact<D> earliest_impact(std::span<const Vec<D>> xa0, std::span<const Vec<D>> xa1,
                             std::span<const Vec<D>> xb0, std::span<const Vec<D>> xb1,
                             const CcdOptions& opt);
 
  private:
+  void refit_at(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb);  // the boxes and trees at rest
+
   std::vector<Cell<KA>> cells_a_;
   std::vector<Cell<KB>> cells_b_;
   int max_a_ = -1, max_b_ = -1;

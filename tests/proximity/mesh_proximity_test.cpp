@@ -94,6 +94,17 @@ void check_self(unsigned seed) {
   }
 }
 
+// The distance between cell a of one mesh and cell b of another, straight from the narrow phase.
+template <int D, int KA, int KB>
+double cell_distance(const std::vector<Vec<D>>& xa, const Cell<KA>& a, const std::vector<Vec<D>>& xb,
+                     const Cell<KB>& b) {
+  Simplex<D, KA> sa;
+  Simplex<D, KB> sb;
+  for (int i = 0; i < KA; ++i) sa[i] = xa[a[i]];
+  for (int i = 0; i < KB; ++i) sb[i] = xb[b[i]];
+  return closest_points<D, KA, KB>(sa, sb).distance;
+}
+
 template <int D, int KA, int KB>
 void check_pair(unsigned seed) {
   std::mt19937 rng(seed);
@@ -104,13 +115,8 @@ void check_pair(unsigned seed) {
   q.pairs_within(xa, xb, 0.06, got);
   std::vector<std::pair<int, int>> want;
   for (int a = 0; a < static_cast<int>(ca.size()); ++a)
-    for (int b = 0; b < static_cast<int>(cb.size()); ++b) {
-      Simplex<D, KA> sa;
-      Simplex<D, KB> sb;
-      for (int i = 0; i < KA; ++i) sa[i] = xa[ca[a][i]];
-      for (int i = 0; i < KB; ++i) sb[i] = xb[cb[b][i]];
-      if (closest_points<D, KA, KB>(sa, sb).distance <= 0.06) want.push_back({a, b});
-    }
+    for (int b = 0; b < static_cast<int>(cb.size()); ++b)
+      if (cell_distance<D, KA, KB>(xa, ca[a], xb, cb[b]) <= 0.06) want.push_back({a, b});
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i)
     EXPECT_EQ(std::make_pair(got[i].a, got[i].b), want[i]);
@@ -135,6 +141,37 @@ TEST(MeshProximity, PairQueriesEqualBruteForce) {
   check_pair<4, 2, 3>(9);
   check_pair<4, 3, 2>(10);
   check_pair<2, 2, 2>(11);
+}
+
+// The smallest distance against the brute force over every pair, at radii below, near and above
+// the true one, and on meshes moved apart until nothing is within the radius.
+template <int D, int KA, int KB>
+void check_smallest_distance(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto [xa, ca] = random_mesh<D, KA>(rng, 80, 100);
+  auto [xb, cb] = random_mesh<D, KB>(rng, 80, 100);
+  PairProximity<D, KA, KB> q(ca, cb);
+  for (const double shift : {0.0, 0.3, 1.2, 5.0}) {
+    std::vector<Vec<D>> moved = xb;
+    for (Vec<D>& v : moved) v[0] += shift;
+    double brute = std::numeric_limits<double>::infinity();
+    for (const Cell<KA>& a : ca)
+      for (const Cell<KB>& b : cb) brute = std::min(brute, cell_distance<D, KA, KB>(xa, a, moved, b));
+    for (const double up_to : {0.5 * brute, brute, 1.01 * brute, 3 * brute + 0.01, 10.0}) {
+      const double got = q.smallest_distance(xa, moved, up_to);
+      if (brute <= up_to)
+        EXPECT_DOUBLE_EQ(got, brute) << "shift " << shift << ", up to " << up_to;
+      else
+        EXPECT_EQ(got, std::numeric_limits<double>::infinity()) << "shift " << shift << ", up to " << up_to;
+    }
+  }
+}
+
+TEST(MeshProximity, SmallestDistanceEqualsBruteForceWithinTheRadiusAndIsInfiniteBeyond) {
+  check_smallest_distance<4, 3, 3>(21);
+  check_smallest_distance<4, 2, 3>(22);
+  check_smallest_distance<3, 3, 3>(23);
+  check_smallest_distance<2, 2, 2>(24);
 }
 
 TEST(MeshProximity, BvhSelfPairsEqualAllOverlappingBoxes) {

@@ -31,6 +31,7 @@ namespace s4d {
 namespace {
 
 constexpr int kMaxRows = 20000;
+constexpr long long kMaxVertices = 200000;  // ten times the largest scenario's cloth; seconds to build
 constexpr int kMaxSmoothingIterations = 20000;
 constexpr double kRate = 0.5;  // Laplacian rate of the w smoothing
 
@@ -329,6 +330,11 @@ void lay_out(Layout& l, std::span<const RibbonStrokeSample> stroke, const Vec3& 
   if (l.path_length / spacing > kMaxRows)
     throw Error("a spacing of " + fmt(spacing) + " along a stroke " + fmt(l.path_length) + " long gives more than " +
                 std::to_string(kMaxRows) + " rows");
+  const long long vertices = static_cast<long long>(std::ceil(l.path_length / spacing) + 1) * options.across;
+  if (vertices > kMaxVertices)
+    throw Error("a ribbon " + std::to_string(options.across) + " vertices across with rows " + fmt(spacing) +
+                " apart along a stroke " + fmt(l.path_length) + " long has about " + std::to_string(vertices) +
+                " vertices, more than " + std::to_string(kMaxVertices) + ": take fewer across or space the rows wider");
   l.clearance = options.clearance > 0 ? options.clearance : 0.05 * l.size;
 
   // The centre line, smoothed where the ribbon would fold.
@@ -634,9 +640,7 @@ void lift_and_check(const Layout& l, const std::vector<double>& w, std::span<con
                   fmt(frame.shadow(r.points[0])) + " (in the shadow): its shadow overlaps there in a way no "
                   "passage caught; turn the view a little or draw it again");
     PairProximity<4, 3, 3> q(out.surface.triangles, others[k].triangles);
-    std::vector<ProximityPair<4>> near;
-    q.pairs_within(out.surface.vertices, others[k].vertices, 4 * l.clearance, near);
-    for (const ProximityPair<4>& p : near) out.gap_to_others = std::min(out.gap_to_others, p.closest.distance);
+    out.gap_to_others = std::min(out.gap_to_others, q.smallest_distance(out.surface.vertices, others[k].vertices, 4 * l.clearance));
   }
 }
 

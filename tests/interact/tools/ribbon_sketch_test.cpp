@@ -411,6 +411,10 @@ TEST(RibbonSketch, BadStrokesAreRefusedWithASentence) {
   o = {};
   o.across = 1;
   refused(good, o, "2 to 64 vertices across");
+  // 5000 rows, under the row limit, but 64 across them is 320 k vertices: minutes and gigabytes.
+  o.across = 64;
+  o.spacing = 3.0 / 5000;
+  refused(good, o, "vertices, more than 200000: take fewer across or space the rows wider");
   // A hairpin tighter than the ribbon is wide folds it onto itself.
   const auto hairpin = stroke_of([](double t) {
     const double a = std::numbers::pi * std::clamp((t - 0.4) / 0.2, 0.0, 1.0);
