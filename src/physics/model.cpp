@@ -13,6 +13,8 @@
 #include "physics/spring_forces.hpp"
 #include "proximity/bvh.hpp"
 #include "proximity/closest_points.hpp"
+#include "proximity/separating_axes.hpp"
+#include "proximity/smallest_within.hpp"
 #include "shape/topology.hpp"
 
 namespace s4d {
@@ -270,41 +272,59 @@ void add_chains(Model<D>& m, const Curve<D>& curve, int off, double thickness) {
   }
 }
 
+// Two cells as simplices, for the kernels of proximity/.
+template <int D, std::size_t K>
+Simplex<D, static_cast<int>(K)> cell_simplex(const std::vector<Vec<D>>& x, const std::array<int, K>& c) {
+  Simplex<D, static_cast<int>(K)> s;
+  for (std::size_t i = 0; i < K; ++i) s[i] = x[c[i]];
+  return s;
+}
+
 // The closest distance of two cells sharing no vertex, by the same kernel as ever for triangles.
 template <int D>
-double cell_distance(const std::vector<Vec<D>>& x, const Triangle& a, const Triangle& b) {
-  const Simplex<D, 3> sa{x[a[0]], x[a[1]], x[a[2]]};
-  const Simplex<D, 3> sb{x[b[0]], x[b[1]], x[b[2]]};
-  return triangle_triangle<D>(sa, sb).distance;
+double cell_distance(const Simplex<D, 3>& a, const Simplex<D, 3>& b) {
+  return triangle_triangle<D>(a, b).distance;
 }
 template <int D>
-double cell_distance(const std::vector<Vec<D>>& x, const Segment& a, const Segment& b) {
-  return segment_segment<D>(x[a[0]], x[a[1]], x[b[0]], x[b[1]]).distance;
+double cell_distance(const Simplex<D, 2>& a, const Simplex<D, 2>& b) {
+  return segment_segment<D>(a[0], a[1], b[0], b[1]).distance;
 }
 
 // The smallest gap of any two cells sharing no vertex (d_all) and of those the springs do not
-// keep apart (d_far), within `search`; the pair of d_all in worst.
+// keep apart (d_far), within `search`; the pair of d_all in worst. On a mesh much finer than
+// `search` one pass at it tests hundreds of pairs a cell, so the radius doubles from a small one
+// (proximity/smallest_within.hpp): d_far >= d_all, so the pass that finds d_far has the pair of
+// d_all too. The last pass, at `search`, keeps what its candidates give beyond it, as one pass did.
 template <int D, std::size_t K, class Near>
 void initial_gaps(const Model<D>& m, const std::vector<std::array<int, K>>& cells, double search, Near near,
                   double& d_all, double& d_far, std::array<int, 2>& worst) {
+  constexpr int k = static_cast<int>(K);
   const std::size_t nc = cells.size();
   std::vector<Box<D>> boxes(nc);
   for (std::size_t t = 0; t < nc; ++t)
     for (int v : cells[t]) boxes[t].add(m.initial[v]);
   Bvh<D> bvh;
   bvh.build(boxes);
-  bvh.self_pairs(search, [&](int i, int j) {
-    const auto& a = cells[i];
-    const auto& b = cells[j];
-    for (int u : a)
-      for (int w : b)
-        if (u == w) return;
-    const double d = cell_distance<D>(m.initial, a, b);
-    if (d < d_all) {
-      d_all = d;
-      worst = {std::min(i, j), std::max(i, j)};
-    }
-    if (!near(i, j)) d_far = std::min(d_far, d);
+  smallest_within(search, [&](double r) {
+    const bool last = r >= search;
+    d_all = d_far = std::numeric_limits<double>::infinity();
+    worst = {-1, -1};
+    bvh.self_pairs(r, [&](int i, int j) {
+      const auto& a = cells[i];
+      const auto& b = cells[j];
+      for (int u : a)
+        for (int w : b)
+          if (u == w) return;
+      const Simplex<D, k> sa = cell_simplex<D, K>(m.initial, a), sb = cell_simplex<D, K>(m.initial, b);
+      if (!last && provably_farther<D, k, k>(sa, sb, r)) return;
+      const double d = cell_distance<D>(sa, sb);
+      if (d < d_all) {
+        d_all = d;
+        worst = {std::min(i, j), std::max(i, j)};
+      }
+      if (!near(i, j)) d_far = std::min(d_far, d);
+    });
+    return d_far;
   });
 }
 

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "physics/vertex_pass.hpp"
 #include "proximity/mesh_proximity.hpp"
+#include "proximity/smallest_within.hpp"
 
 namespace s4d {
 
@@ -225,10 +226,12 @@ template <int D, int K>
 double smallest_gap(const std::vector<std::array<int, K>>& cells, std::span<const Vec<D>> x, double search) {
   SelfProximity<D, K> prox(std::vector<Cell<K>>(cells.begin(), cells.end()));
   std::vector<ProximityPair<D>> pairs;
-  prox.pairs_within(x, search, pairs);
-  double d = std::numeric_limits<double>::infinity();
-  for (const auto& p : pairs) d = std::min(d, p.closest.distance);
-  return d;
+  return smallest_within(search, [&](double within) {
+    prox.pairs_within(x, within, pairs);
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& p : pairs) d = std::min(d, p.closest.distance);
+    return d;
+  });
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // Two meshes against each other: BVH candidates, then the narrow phase of narrow_phase.hpp.
 #include "proximity/mesh_proximity.hpp"
 
-#include <algorithm>
 #include <limits>
 
 #include "proximity/narrow_phase.hpp"
+#include "proximity/smallest_within.hpp"
 
 namespace s4d {
 
@@ -42,13 +42,9 @@ void PairProximity<D, KA, KB>::pairs_within(std::span<const Vec<D>> xa, std::spa
 template <int D, int KA, int KB>
 double PairProximity<D, KA, KB>::smallest_distance(std::span<const Vec<D>> xa, std::span<const Vec<D>> xb,
                                                    double up_to) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  if (!(up_to >= 0)) return inf;
   refit_at(xa, xb);
-  // The radius doubles from a small one: the pass that finds a pair visits only the candidates
-  // within twice the answer, where one pass at `up_to` could visit every cell against every cell.
-  for (double r = up_to / 64;; r = std::min(2 * r, up_to)) {
-    double best = r;
+  return smallest_within(up_to, [&](double r) {
+    double best = r;  // the narrow phase skips what is provably farther than the best so far
     bool found = false;
     bvh_a_.pairs_with(bvh_b_, r, [&](int i, int j) {
       const Simplex<D, KA> sa = gather<D, KA>(xa, cells_a_[i]);
@@ -57,9 +53,8 @@ double PairProximity<D, KA, KB>::smallest_distance(std::span<const Vec<D>> xa, s
       const double d = closest_points<D, KA, KB>(sa, sb).distance;
       if (d <= best) best = d, found = true;
     });
-    if (found) return best;
-    if (r >= up_to) return inf;
-  }
+    return found ? best : std::numeric_limits<double>::infinity();
+  });
 }
 
 template <int D, int KA, int KB>

@@ -84,15 +84,21 @@ TEST(ModelBuilder, ThicknessStaysBelowRestGaps) {
   ModelBuilder<4> b(p);
   b.add_body(test::flat_cloth<4>(11, 1.0));
   const Model<4> m = b.build();
-  double far = 1e300;
+  double far = 1e300, all = 1e300;
   for (const Triangle& a : m.triangles)
     for (const Triangle& c : m.triangles) {
-      if (m.near_adjacent(a, c)) continue;
-      far = std::min(far, triangle_triangle<4>({m.initial[a[0]], m.initial[a[1]], m.initial[a[2]]},
-                                               {m.initial[c[0]], m.initial[c[1]], m.initial[c[2]]})
-                              .distance);
+      bool shared = false;
+      for (int u : a)
+        for (int v : c) shared = shared || u == v;
+      if (shared) continue;
+      const double d = triangle_triangle<4>({m.initial[a[0]], m.initial[a[1]], m.initial[a[2]]},
+                                            {m.initial[c[0]], m.initial[c[1]], m.initial[c[2]]})
+                           .distance;
+      all = std::min(all, d);
+      if (!m.near_adjacent(a, c)) far = std::min(far, d);
     }
   EXPECT_NEAR(m.contact_thickness, 0.9 * far, 1e-12);
+  EXPECT_DOUBLE_EQ(m.hard_thickness, std::min(0.25 * m.contact_thickness, 0.5 * all));
   EXPECT_GT(far, 0.09);  // nothing closer than a grid step is left unguarded by springs
 }
 

@@ -7,6 +7,7 @@
 #include "core/threads.hpp"
 #include "proximity/mesh_proximity.hpp"
 #include "proximity/self_proximity.hpp"
+#include "proximity/smallest_within.hpp"
 #include "scenario/script_driver.hpp"
 
 namespace s4d {
@@ -36,10 +37,13 @@ void check(const std::vector<std::array<int, K>>& given, const std::vector<doubl
   r.true_intersections = static_cast<int>(intersecting_pairs<D, k>(x, cells, 1e-9 * (hi - lo).norm()).size());
   SelfProximity<D, k> prox(std::move(cells));
   std::vector<ProximityPair<D>> pairs;
-  prox.pairs_within(x, search, pairs);
-  r.min_gap = std::numeric_limits<double>::infinity();
-  for (const auto& p : pairs)
-    if (!near(p.a, p.b)) r.min_gap = std::min(r.min_gap, p.closest.distance);
+  r.min_gap = smallest_within(search, [&](double within) {
+    prox.pairs_within(x, within, pairs);
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& p : pairs)
+      if (!near(p.a, p.b)) d = std::min(d, p.closest.distance);
+    return d;
+  });
 }
 
 }  // namespace
